@@ -1,0 +1,253 @@
+#include "app.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "error.h"
+#include "image.h"
+#include "paths.h"
+
+namespace pbr {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kBenchmarkFrames = 30;
+
+double percentile(std::vector<double> values, double p) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    // Nearest rank: the smallest value with at least p of the samples at or below it.
+    const size_t rank = size_t(std::ceil(p * double(values.size())));
+    return values[std::clamp<size_t>(rank, 1, values.size()) - 1];
+}
+
+std::string jsonEscape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (static_cast<unsigned char>(c) < 0x20) continue;
+        out += c;
+    }
+    return out;
+}
+
+}  // namespace
+
+App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
+    if (config_.title.empty()) config_.title = config_.name;
+    usage_ = usageText(argc > 0 ? fs::path(argv[0]).filename().string() : config_.name, config_.flags);
+    std::vector<std::string> args(argv + std::min(argc, 1), argv + argc);
+    try {
+        options_ = parseOptions(args, config_.flags);
+    } catch (const UsageError& e) {
+        throw UsageError(e.what(), usage_);
+    }
+    if (options_.help) {
+        std::fputs(usage_.c_str(), stdout);
+        throw ExitRequest{0};
+    }
+
+    startSeconds_ = 0.0;
+    if (!options_.headless) {
+        std::string whyNot;
+        context_ = createGlfwContext(config_.title, options_.width, options_.height, whyNot);
+        if (!context_) {
+            // The main command must still show something: render offscreen and say where.
+            std::fprintf(stderr, "%s: %s; rendering offscreen instead\n", config_.name.c_str(),
+                         whyNot.c_str());
+            noDisplayFallback_ = true;
+        }
+    }
+    if (!context_) context_ = createOsMesaContext(options_.width, options_.height);
+    startSeconds_ = context_->seconds();
+
+    installDebugOutput();
+    const glm::ivec2 size = context_->windowed() ? context_->framebufferSize()
+                                                 : glm::ivec2(options_.width, options_.height);
+    target_ = std::make_unique<RenderTarget>(std::max(size.x, 1), std::max(size.y, 1), options_.msaa);
+
+    if (options_.camera) {
+        const CameraStart& start = *options_.camera;
+        camera_ = FlyCamera({start.x, start.y, start.z}, start.yaw.value_or(config_.cameraYaw),
+                            start.pitch.value_or(config_.cameraPitch));
+    } else {
+        camera_ = FlyCamera(config_.cameraPosition, config_.cameraYaw, config_.cameraPitch);
+    }
+
+    if (options_.frames) {
+        framesWanted_ = *options_.frames;
+    } else if (options_.benchmark) {
+        framesWanted_ = kBenchmarkFrames + 1;  // the first frame warms up and is not counted
+    } else {
+        framesWanted_ = headless() ? 1 : 0;
+    }
+    if (options_.benchmark) context_->setVsync(false);
+    checkGlErrors("start-up");
+}
+
+App::~App() {
+    shaders_.clear();
+    target_.reset();
+    if (context_ && liveGlObjects() != 0 && !std::uncaught_exceptions()) {
+        std::fprintf(stderr, "%s: warning: %d GL objects still alive at exit\n",
+                     config_.name.c_str(), liveGlObjects());
+    }
+}
+
+std::optional<std::string> App::flag(const std::string& name) const {
+    auto found = options_.sampleFlags.find(name);
+    if (found == options_.sampleFlags.end()) return std::nullopt;
+    return found->second;
+}
+
+Shader& App::shader(const std::string& vertex, const std::string& fragment) {
+    return shaders_.emplace_back(vertex, fragment);
+}
+
+void App::bindRenderTarget() const { target_->bind(); }
+
+std::string App::renderer() const {
+    const GLubyte* text = glGetString(GL_RENDERER);
+    return text ? reinterpret_cast<const char*>(text) : "unknown";
+}
+
+bool App::nextFrame() {
+    if (finished_) return false;
+    if (frameIndex_ >= 0) endFrame();
+    const bool framesDone = framesWanted_ > 0 && frameIndex_ + 1 >= framesWanted_;
+    InputFrame input = context_->pollInput();
+    if (framesDone || input.quit) {
+        finish();
+        return false;
+    }
+    ++frameIndex_;
+
+    const double now = context_->seconds();
+    if (frameIndex_ == 0) firstFrameSeconds_ = now;
+    deltaTime_ = frameIndex_ == 0 ? 0.0f : float(now - lastSeconds_);
+    lastSeconds_ = now;
+    if (options_.time) {
+        time_ = float(*options_.time);
+    } else {
+        time_ = headless() ? 0.0f : float(now - startSeconds_);
+    }
+
+    if (input.forward) camera_.processKeyboard(CameraMove::Forward, deltaTime_);
+    if (input.backward) camera_.processKeyboard(CameraMove::Backward, deltaTime_);
+    if (input.left) camera_.processKeyboard(CameraMove::Left, deltaTime_);
+    if (input.right) camera_.processKeyboard(CameraMove::Right, deltaTime_);
+    if (input.mouseDelta != glm::vec2(0.0f)) {
+        camera_.processMouseMovement(input.mouseDelta.x, input.mouseDelta.y);
+    }
+    if (input.scroll != 0.0f) camera_.processMouseScroll(input.scroll);
+    if (input.reload) {
+        int reloaded = 0;
+        for (Shader& shader : shaders_) reloaded += shader.reload() ? 1 : 0;
+        std::fprintf(stderr, "reloaded %d of %zu shaders\n", reloaded, shaders_.size());
+    }
+    if (input.screenshot) {
+        // Taken at the end of this frame, once it is drawn.
+        ++screenshotCount_;
+    }
+
+    if (context_->windowed()) {
+        const glm::ivec2 size = context_->framebufferSize();
+        if (size.x > 0 && size.y > 0 && (size.x != target_->width() || size.y != target_->height())) {
+            target_ = std::make_unique<RenderTarget>(size.x, size.y, options_.msaa);
+        }
+    }
+    frameStart_ = context_->seconds();
+    target_->bind();
+    return true;
+}
+
+void App::endFrame() {
+    target_->resolve();
+    if (options_.benchmark) {
+        glFinish();  // the frame's time includes the GPU's work, not just the submission
+        if (frameIndex_ > 0) frameMilliseconds_.push_back((context_->seconds() - frameStart_) * 1000.0);
+    }
+    if (screenshotCount_ > 0 && context_->windowed()) {
+        writeFrame("screenshot-" + config_.name + "-" + std::to_string(frameIndex_) + ".png",
+                   "screenshot");
+        screenshotCount_ = 0;
+    }
+    if (context_->windowed()) {
+        const glm::ivec2 size = context_->framebufferSize();
+        target_->blitToDefault(size.x, size.y);
+        context_->swapBuffers();
+    }
+    checkGlErrors("frame");
+}
+
+void App::writeFrame(const std::string& path, const char* verb) {
+    writePng(path, target_->readPixels());
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(path, ec);
+    std::printf("%s: %s %s (%dx%d, msaa %d, %s)\n", config_.name.c_str(), verb,
+                (ec ? fs::path(path) : absolute).c_str(), target_->width(), target_->height(),
+                target_->samples(), renderer().c_str());
+}
+
+void App::finish() {
+    finished_ = true;
+    if (frameIndex_ >= 0) {
+        const bool wantImage = !options_.output.empty() || (headless() && !options_.benchmark);
+        if (wantImage) {
+            const std::string path = options_.output.empty() ? config_.name + ".png" : options_.output;
+            writeFrame(path, "wrote");
+        }
+    }
+    checkGlErrors("end of run");
+    if (options_.benchmark) {
+        std::printf(
+            "{\"sample\":\"%s\",\"backend\":\"%s\",\"renderer\":\"%s\",\"width\":%d,\"height\":%d,"
+            "\"msaa\":%d,\"frames\":%zu,\"median_ms\":%.2f,\"p95_ms\":%.2f,\"startup_s\":%.3f}\n",
+            config_.name.c_str(), context_->backend().c_str(), jsonEscape(renderer()).c_str(),
+            target_->width(), target_->height(), target_->samples(), frameMilliseconds_.size(),
+            percentile(frameMilliseconds_, 0.5), percentile(frameMilliseconds_, 0.95),
+            firstFrameSeconds_ - startSeconds_);
+    }
+    std::fflush(stdout);
+    if (glErrorCount_ > 0) {
+        throw Error(std::to_string(glErrorCount_) + " OpenGL error(s) during the run; first: " +
+                    firstGlError_);
+    }
+}
+
+void GLAD_API_PTR App::onDebugMessage(GLenum source, GLenum type, GLuint, GLenum severity,
+                                      GLsizei, const GLchar* message, const void* user) {
+    // The compiler's messages come back mapped to file:line through Shader; not here.
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
+    App* app = static_cast<App*>(const_cast<void*>(user));
+    if (type == GL_DEBUG_TYPE_ERROR) {
+        if (app->glErrorCount_++ == 0) app->firstGlError_ = message;
+        std::fprintf(stderr, "GL error: %s\n", message);
+    } else if (severity == GL_DEBUG_SEVERITY_HIGH) {
+        std::fprintf(stderr, "GL warning: %s\n", message);
+    }
+}
+
+void App::installDebugOutput() {
+    // KHR_debug says where an error happened, as it happens; glGetError after each frame is the
+    // fallback (and catches what a driver does not report through the callback).
+    if (!GLAD_GL_KHR_debug) return;
+    glEnable(GL_DEBUG_OUTPUT);
+    glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
+    glDebugMessageCallback(onDebugMessage, this);
+}
+
+void App::checkGlErrors(const char* where) {
+    for (GLenum error = glGetError(); error != GL_NO_ERROR; error = glGetError()) {
+        if (GLAD_GL_KHR_debug) continue;  // already counted and printed by the callback
+        const std::string text = glErrorName(error) + " (found at " + where + ")";
+        if (glErrorCount_++ == 0) firstGlError_ = text;
+        std::fprintf(stderr, "GL error: %s\n", text.c_str());
+    }
+}
+
+}  // namespace pbr

@@ -1,0 +1,107 @@
+#pragma once
+// The frame around a sample: command line, context (window or offscreen), input, time, the
+// render target, screenshots, headless capture, GL error checks and the benchmark.
+//
+//     int main(int argc, char** argv) try {
+//         pbr::App app(argc, argv, {.name = "01_lighting", .cameraPosition = {0, 0, 23}});
+//         pbr::Shader& pbr = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
+//         while (app.nextFrame()) { ... draw ... }
+//     } catch (...) {
+//         return pbr::reportFailure();
+//     }
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "camera.h"
+#include "context.h"
+#include "framebuffer.h"
+#include "options.h"
+#include "shader.h"
+
+namespace pbr {
+
+struct AppConfig {
+    std::string name;                  // "01_lighting": the default output file and window title
+    std::string title;                 // window title; empty: the name
+    glm::vec3 cameraPosition{0.0f, 0.0f, 3.0f};  // default start, unless --camera says otherwise
+    float cameraYaw = FlyCamera::kDefaultYaw;
+    float cameraPitch = FlyCamera::kDefaultPitch;
+    std::vector<FlagSpec> flags;       // the sample's own flags
+};
+
+class App {
+public:
+    App(int argc, char** argv, AppConfig config);
+    ~App();
+    App(const App&) = delete;
+    App& operator=(const App&) = delete;
+
+    // Ends the previous frame (resolve, show or capture) and starts the next one (input, time,
+    // render target bound, viewport set). Returns false when the run is over: the window was
+    // closed, or --frames were drawn; headless, the last frame has been written by then.
+    bool nextFrame();
+
+    const Options& options() const { return options_; }
+    // The value of one of the sample's own flags, when given.
+    std::optional<std::string> flag(const std::string& name) const;
+
+    FlyCamera& camera() { return camera_; }
+    glm::mat4 view() const { return camera_.viewMatrix(); }
+    glm::mat4 projection() const { return camera_.projectionMatrix(aspect()); }
+
+    // A program from shaders/<vertex> and shaders/<fragment>, owned by the App so that R can
+    // reload it. The reference stays valid for the App's life.
+    Shader& shader(const std::string& vertex, const std::string& fragment);
+
+    // Rebinds the frame's render target (after drawing into a framebuffer of your own).
+    void bindRenderTarget() const;
+
+    bool headless() const { return !context_->windowed(); }
+    int width() const { return target_->width(); }
+    int height() const { return target_->height(); }
+    float aspect() const { return float(width()) / float(height()); }
+    float time() const { return time_; }            // seconds; fixed when headless
+    float deltaTime() const { return deltaTime_; }  // seconds since the last frame
+    int frameIndex() const { return frameIndex_; }  // 0 for the first frame
+    std::string renderer() const;
+
+private:
+    void beginFrame();
+    void endFrame();
+    void finish();
+    void installDebugOutput();
+    void checkGlErrors(const char* where);
+    void writeFrame(const std::string& path, const char* verb);
+
+    AppConfig config_;
+    Options options_;
+    std::string usage_;
+    std::unique_ptr<Context> context_;        // first member: destroyed last
+    std::unique_ptr<RenderTarget> target_;
+    std::deque<Shader> shaders_;
+    FlyCamera camera_;
+
+    int framesWanted_ = 0;                    // 0: until the window closes
+    int frameIndex_ = -1;
+    float time_ = 0.0f, deltaTime_ = 0.0f;
+    double lastSeconds_ = 0.0;
+    double startSeconds_ = 0.0, firstFrameSeconds_ = 0.0;
+    double frameStart_ = 0.0;
+    std::vector<double> frameMilliseconds_;
+    int screenshotCount_ = 0;
+    bool noDisplayFallback_ = false;
+    bool finished_ = false;
+    int glErrorCount_ = 0;
+    std::string firstGlError_;
+
+    static void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
+                                            GLsizei length, const GLchar* message,
+                                            const void* user);
+};
+
+}  // namespace pbr

@@ -1,0 +1,67 @@
+#include "brdf.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace pbr::cpu {
+
+namespace {
+constexpr float PI = std::numbers::pi_v<float>;
+}
+
+float DistributionGGX(const glm::vec3& N, const glm::vec3& H, float roughness) {
+    const float a = roughness * roughness;  // Disney/Epic: the NDF takes roughness squared
+    const float a2 = a * a;
+    const float NdotH = std::max(glm::dot(N, H), 0.0f);
+    const float denom = NdotH * NdotH * (a2 - 1.0f) + 1.0f;
+    return a2 / (PI * denom * denom);
+}
+
+float GeometrySchlickGGX(float NdotV, float roughness) {
+    const float r = roughness + 1.0f;
+    const float k = (r * r) / 8.0f;  // k for direct light
+    return NdotV / (NdotV * (1.0f - k) + k);
+}
+
+float GeometrySmith(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L, float roughness) {
+    const float NdotV = std::max(glm::dot(N, V), 0.0f);
+    const float NdotL = std::max(glm::dot(N, L), 0.0f);
+    return GeometrySchlickGGX(NdotV, roughness) * GeometrySchlickGGX(NdotL, roughness);
+}
+
+glm::vec3 fresnelSchlick(float cosTheta, const glm::vec3& F0) {
+    return F0 + (1.0f - F0) * std::pow(std::clamp(1.0f - cosTheta, 0.0f, 1.0f), 5.0f);
+}
+
+glm::vec3 shadePointLights(const SurfacePoint& s, const glm::vec3& cameraPosition,
+                           std::span<const PointLight> lights) {
+    const glm::vec3 N = s.normal;
+    const glm::vec3 V = glm::normalize(cameraPosition - s.position);
+    const glm::vec3 F0 = glm::mix(glm::vec3(0.04f), s.albedo, s.metallic);
+    glm::vec3 Lo(0.0f);
+    for (const PointLight& light : lights) {
+        const glm::vec3 L = glm::normalize(light.position - s.position);
+        const glm::vec3 H = glm::normalize(V + L);
+        const float distance = glm::length(light.position - s.position);
+        const glm::vec3 radiance = light.color / (distance * distance);
+
+        const float NDF = DistributionGGX(N, H, s.roughness);
+        const float G = GeometrySmith(N, V, L, s.roughness);
+        const glm::vec3 F = fresnelSchlick(std::max(glm::dot(H, V), 0.0f), F0);
+        const float NdotV = std::max(glm::dot(N, V), 0.0f);
+        const float NdotL = std::max(glm::dot(N, L), 0.0f);
+        // + 0.001 keeps the denominator off zero at grazing angles, as in the text.
+        const glm::vec3 specular = NDF * G * F / (4.0f * NdotV * NdotL + 0.001f);
+        const glm::vec3 kD = (glm::vec3(1.0f) - F) * (1.0f - s.metallic);
+        Lo += (kD * s.albedo / PI + specular) * radiance * NdotL;
+    }
+    return glm::vec3(0.03f) * s.albedo * s.ao + Lo;
+}
+
+glm::vec3 reinhardGamma(const glm::vec3& color) {
+    const glm::vec3 mapped = color / (color + glm::vec3(1.0f));
+    return glm::pow(mapped, glm::vec3(1.0f / 2.2f));
+}
+
+}  // namespace pbr::cpu

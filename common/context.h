@@ -1,0 +1,41 @@
+#pragma once
+// Where GL runs: a GLFW window, or an offscreen context made directly (no display needed).
+// The App picks one; samples never see this file.
+#include <memory>
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace pbr {
+
+// What the user did since the last poll (windowed only; offscreen contexts report nothing).
+struct InputFrame {
+    bool forward = false, backward = false, left = false, right = false;
+    glm::vec2 mouseDelta{0.0f};  // pixels, y up
+    float scroll = 0.0f;
+    bool screenshot = false;  // F12
+    bool reload = false;      // R
+    bool quit = false;        // Esc or the window's close button
+};
+
+class Context {
+public:
+    virtual ~Context() = default;
+    virtual bool windowed() const = 0;
+    virtual std::string backend() const = 0;    // "glfw", "osmesa"
+    virtual glm::ivec2 framebufferSize() const = 0;
+    virtual InputFrame pollInput() { return {}; }
+    virtual void swapBuffers() {}
+    virtual double seconds() const = 0;         // monotonic clock
+    virtual void setVsync(bool) {}
+};
+
+// An offscreen OSMesa context (GL 3.3 core or later). Throws Error when OSMesa cannot make one.
+std::unique_ptr<Context> createOsMesaContext(int width, int height);
+
+// A GLFW window with a GL 3.3 core context. Returns nullptr, with the reason in `whyNot`, when
+// there is no display to open it on.
+std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, int height,
+                                           std::string& whyNot);
+
+}  // namespace pbr

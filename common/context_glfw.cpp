@@ -1,0 +1,123 @@
+// A window through GLFW 3.3: core profile 3.3 (forward-compatible on macOS), resizable, vsync.
+// Multisampling happens in the App's own framebuffer, so the window's needs none.
+#include "gl.h"  // glad provides the GL declarations; GLFW must not include its own
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cstdlib>
+
+#include "context.h"
+#include "error.h"
+
+namespace pbr {
+
+namespace {
+
+std::string lastGlfwError;
+
+void onGlfwError(int, const char* description) { lastGlfwError = description ? description : ""; }
+
+class GlfwContext final : public Context {
+public:
+    explicit GlfwContext(GLFWwindow* window) : window_(window) {
+        glfwSetWindowUserPointer(window_, this);
+        glfwSetInputMode(window_, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
+        glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
+            static_cast<GlfwContext*>(glfwGetWindowUserPointer(w))->onCursor(x, y);
+        });
+        glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double y) {
+            static_cast<GlfwContext*>(glfwGetWindowUserPointer(w))->pending_.scroll += float(y);
+        });
+        glfwSetKeyCallback(window_, [](GLFWwindow* w, int key, int, int action, int) {
+            if (action != GLFW_PRESS) return;
+            InputFrame& pending = static_cast<GlfwContext*>(glfwGetWindowUserPointer(w))->pending_;
+            if (key == GLFW_KEY_F12) pending.screenshot = true;
+            if (key == GLFW_KEY_R) pending.reload = true;
+            if (key == GLFW_KEY_ESCAPE) pending.quit = true;
+        });
+    }
+    ~GlfwContext() override {
+        glfwDestroyWindow(window_);
+        glfwTerminate();
+    }
+
+    bool windowed() const override { return true; }
+    std::string backend() const override { return "glfw"; }
+    glm::ivec2 framebufferSize() const override {
+        int width = 0, height = 0;
+        glfwGetFramebufferSize(window_, &width, &height);
+        return {width, height};
+    }
+    InputFrame pollInput() override {
+        glfwPollEvents();
+        InputFrame frame = pending_;
+        pending_ = {};
+        frame.forward = glfwGetKey(window_, GLFW_KEY_W) == GLFW_PRESS;
+        frame.backward = glfwGetKey(window_, GLFW_KEY_S) == GLFW_PRESS;
+        frame.left = glfwGetKey(window_, GLFW_KEY_A) == GLFW_PRESS;
+        frame.right = glfwGetKey(window_, GLFW_KEY_D) == GLFW_PRESS;
+        frame.quit = frame.quit || glfwWindowShouldClose(window_);
+        return frame;
+    }
+    void swapBuffers() override { glfwSwapBuffers(window_); }
+    double seconds() const override { return glfwGetTime(); }
+    void setVsync(bool on) override { glfwSwapInterval(on ? 1 : 0); }
+
+private:
+    void onCursor(double x, double y) {
+        if (!haveCursor_) {
+            // The first event only sets the reference, so the view does not jump.
+            haveCursor_ = true;
+        } else {
+            pending_.mouseDelta += glm::vec2(float(x - lastX_), float(lastY_ - y));
+        }
+        lastX_ = x;
+        lastY_ = y;
+    }
+
+    GLFWwindow* window_;
+    InputFrame pending_;
+    bool haveCursor_ = false;
+    double lastX_ = 0.0, lastY_ = 0.0;
+};
+
+}  // namespace
+
+std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, int height,
+                                           std::string& whyNot) {
+    const char* x11 = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((!x11 || !*x11) && (!wayland || !*wayland)) {
+        whyNot = "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
+        return nullptr;
+    }
+    glfwSetErrorCallback(onGlfwError);
+    if (!glfwInit()) {
+        whyNot = "GLFW cannot start: " + lastGlfwError;
+        return nullptr;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+#ifdef __APPLE__
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+#endif
+    glfwWindowHint(GLFW_SAMPLES, 0);
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!window) {
+        whyNot = "cannot open a GL 3.3 core window: " + lastGlfwError;
+        glfwTerminate();
+        return nullptr;
+    }
+    glfwMakeContextCurrent(window);
+    if (!gladLoadGL(glfwGetProcAddress)) {
+        glfwDestroyWindow(window);
+        glfwTerminate();
+        throw Error("glfw: cannot load the OpenGL functions (gladLoadGL failed)");
+    }
+    glfwSwapInterval(1);
+    return std::make_unique<GlfwContext>(window);
+}
+
+}  // namespace pbr

@@ -1,0 +1,40 @@
+#include "error.h"
+
+#include <cstdio>
+#include <exception>
+#include <new>
+
+namespace pbr {
+
+namespace {
+// Keep the promise of one line even when a message carries a newline (a driver's log, say).
+std::string oneLine(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    for (char& c : text) {
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    return text;
+}
+}  // namespace
+
+int reportFailure() {
+    try {
+        throw;
+    } catch (const ExitRequest& exit) {
+        return exit.code;
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "error: %s\n%s", oneLine(e.what()).c_str(), e.usage().c_str());
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "error: out of memory\n");
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", oneLine(e.what()).c_str());
+        return 1;
+    } catch (...) {
+        std::fprintf(stderr, "error: unknown failure\n");
+        return 1;
+    }
+}
+
+}  // namespace pbr

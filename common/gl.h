@@ -1,0 +1,83 @@
+#pragma once
+// The OpenGL loader (glad 2, generated at configure time) and move-only owners for GL objects.
+// No sample calls glGen*/glDelete* by hand: it holds one of these and the destructor deletes.
+#include <glad/gl.h>
+
+#include <string>
+#include <utility>
+
+namespace pbr {
+
+// Counts of live GL objects of the kinds below, so a run can prove it released everything.
+int liveGlObjects();
+
+namespace detail {
+void countGlObject(int delta);
+
+struct TextureKind {
+    static GLuint create();
+    static void destroy(GLuint id);
+};
+struct BufferKind {
+    static GLuint create();
+    static void destroy(GLuint id);
+};
+struct VertexArrayKind {
+    static GLuint create();
+    static void destroy(GLuint id);
+};
+struct FramebufferKind {
+    static GLuint create();
+    static void destroy(GLuint id);
+};
+struct RenderbufferKind {
+    static GLuint create();
+    static void destroy(GLuint id);
+};
+struct ProgramKind {
+    static GLuint create();
+    static void destroy(GLuint id);
+};
+}  // namespace detail
+
+// Owns one GL object name; created on construction, deleted on destruction, moved, never copied.
+template <class Kind>
+class GlObject {
+public:
+    GlObject() : id_(Kind::create()) { detail::countGlObject(+1); }
+    ~GlObject() { reset(); }
+    GlObject(GlObject&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+    GlObject& operator=(GlObject&& other) noexcept {
+        if (this != &other) {
+            reset();
+            id_ = std::exchange(other.id_, 0);
+        }
+        return *this;
+    }
+    GlObject(const GlObject&) = delete;
+    GlObject& operator=(const GlObject&) = delete;
+
+    GLuint id() const { return id_; }
+
+private:
+    void reset() {
+        if (id_ != 0) {
+            Kind::destroy(id_);
+            detail::countGlObject(-1);
+            id_ = 0;
+        }
+    }
+    GLuint id_ = 0;
+};
+
+using GlTexture = GlObject<detail::TextureKind>;
+using GlBuffer = GlObject<detail::BufferKind>;
+using GlVertexArray = GlObject<detail::VertexArrayKind>;
+using GlFramebuffer = GlObject<detail::FramebufferKind>;
+using GlRenderbuffer = GlObject<detail::RenderbufferKind>;
+using GlProgram = GlObject<detail::ProgramKind>;
+
+// "GL_INVALID_OPERATION" for 0x0502, and so on.
+std::string glErrorName(GLenum error);
+
+}  // namespace pbr

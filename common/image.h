@@ -1,0 +1,42 @@
+#pragma once
+// Images on the CPU: PNG read and write, and the comparison metrics and difference picture the
+// golden tests use. No OpenGL. Rows are stored top row first, as in a PNG file.
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace pbr {
+
+struct Image {
+    int width = 0;
+    int height = 0;
+    int channels = 0;  // 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA
+    std::vector<std::uint8_t> pixels;
+
+    std::uint8_t at(int x, int y, int c) const {
+        return pixels[(size_t(y) * size_t(width) + size_t(x)) * size_t(channels) + size_t(c)];
+    }
+};
+
+// Reads a PNG (or any format stb_image decodes) as 8-bit; channels = what the file has, or
+// `wantChannels` when non-zero. Throws Error("<path>: <reason>").
+Image readImage(const std::filesystem::path& path, int wantChannels = 0);
+// Writes an 8-bit PNG (same bytes for the same pixels). Throws Error("<path>: <reason>").
+void writePng(const std::filesystem::path& path, const Image& image);
+// The image with its rows in the opposite order (GL reads bottom row first).
+Image flipRows(const Image& image);
+
+// How far `actual` is from `expected` (same size; colour channels only, alpha ignored).
+struct ImageDiff {
+    int maxChannelDiff = 0;       // largest |a - b| of any channel, 0..255
+    size_t pixelsOverThreshold = 0;  // pixels with any channel differing by more than `threshold`
+    double fractionOverThreshold = 0.0;
+    double psnr = 0.0;            // dB over RGB; +infinity when identical
+    double meanAbsDiff = 0.0;     // per channel, 0..255
+};
+ImageDiff compareImages(const Image& actual, const Image& expected, int threshold);
+
+// |actual - expected| * gain per channel on black, so a one-level change is visible.
+Image differenceImage(const Image& actual, const Image& expected, int gain);
+
+}  // namespace pbr

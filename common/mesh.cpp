@@ -1,0 +1,163 @@
+#include "mesh.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "error.h"
+
+namespace pbr {
+
+namespace {
+
+// Vertices shared by both sphere topologies.
+MeshData sphereVertices(int xSegments, int ySegments) {
+    if (xSegments < 3 || ySegments < 2) throw Error("uvSphere: needs at least 3 x 2 segments");
+    constexpr float pi = std::numbers::pi_v<float>;
+    MeshData mesh;
+    const size_t count = size_t(xSegments + 1) * size_t(ySegments + 1);
+    mesh.positions.reserve(count);
+    mesh.normals.reserve(count);
+    mesh.uvs.reserve(count);
+    mesh.tangents.reserve(count);
+    for (int y = 0; y <= ySegments; ++y) {
+        for (int x = 0; x <= xSegments; ++x) {
+            const float u = float(x) / float(xSegments);
+            const float v = float(y) / float(ySegments);
+            const float phi = u * 2.0f * pi;
+            const float theta = v * pi;
+            const glm::vec3 p(std::cos(phi) * std::sin(theta), std::cos(theta),
+                              std::sin(phi) * std::sin(theta));
+            mesh.positions.push_back(p);
+            mesh.normals.push_back(p);
+            mesh.uvs.push_back({u, v});
+            // dP/du without the sin(theta) factor, so it stays defined at the poles.
+            const glm::vec3 tangent(-std::sin(phi), 0.0f, std::cos(phi));
+            // cross(N, T) points south, the way v grows: w = +1.
+            mesh.tangents.push_back(glm::vec4(tangent, 1.0f));
+        }
+    }
+    return mesh;
+}
+
+}  // namespace
+
+MeshData uvSphere(int xSegments, int ySegments) {
+    MeshData mesh = sphereVertices(xSegments, ySegments);
+    mesh.primitive = Primitive::TriangleStrip;
+    const std::uint32_t rowLength = std::uint32_t(xSegments) + 1;
+    mesh.indices.reserve(size_t(2) * rowLength * size_t(ySegments));
+    // Even rows run left to right, odd rows right to left, so one strip covers the sphere.
+    for (int y = 0; y < ySegments; ++y) {
+        const std::uint32_t top = std::uint32_t(y) * rowLength;
+        const std::uint32_t bottom = top + rowLength;
+        if (y % 2 == 0) {
+            for (int x = 0; x <= xSegments; ++x) {
+                mesh.indices.push_back(top + std::uint32_t(x));
+                mesh.indices.push_back(bottom + std::uint32_t(x));
+            }
+        } else {
+            for (int x = xSegments; x >= 0; --x) {
+                mesh.indices.push_back(bottom + std::uint32_t(x));
+                mesh.indices.push_back(top + std::uint32_t(x));
+            }
+        }
+    }
+    return mesh;
+}
+
+MeshData uvSphereTriangles(int xSegments, int ySegments) {
+    MeshData mesh = sphereVertices(xSegments, ySegments);
+    mesh.primitive = Primitive::Triangles;
+    const std::uint32_t rowLength = std::uint32_t(xSegments) + 1;
+    for (int y = 0; y < ySegments; ++y) {
+        for (int x = 0; x < xSegments; ++x) {
+            const std::uint32_t a = std::uint32_t(y) * rowLength + std::uint32_t(x);
+            const std::uint32_t b = a + rowLength;
+            // Same winding as the strip's first triangle (top, bottom, top + 1).
+            mesh.indices.insert(mesh.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    }
+    return mesh;
+}
+
+MeshData cube() {
+    MeshData mesh;
+    struct Face {
+        glm::vec3 normal, tangent;
+    };
+    const Face faces[] = {
+        {{0, 0, 1}, {1, 0, 0}},  {{0, 0, -1}, {-1, 0, 0}}, {{1, 0, 0}, {0, 0, -1}},
+        {{-1, 0, 0}, {0, 0, 1}}, {{0, 1, 0}, {1, 0, 0}},   {{0, -1, 0}, {1, 0, 0}},
+    };
+    for (const Face& face : faces) {
+        const glm::vec3 bitangent = glm::cross(face.normal, face.tangent);
+        const std::uint32_t base = std::uint32_t(mesh.positions.size());
+        const glm::vec2 corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        for (const glm::vec2& uv : corners) {
+            const glm::vec2 s = uv * 2.0f - 1.0f;
+            mesh.positions.push_back(face.normal + face.tangent * s.x + bitangent * s.y);
+            mesh.normals.push_back(face.normal);
+            mesh.uvs.push_back(uv);
+            mesh.tangents.push_back(glm::vec4(face.tangent, 1.0f));
+        }
+        mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+    return mesh;
+}
+
+MeshData quad() {
+    MeshData mesh;
+    mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+    mesh.normals.assign(4, {0, 0, 1});
+    mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    mesh.tangents.assign(4, {1, 0, 0, 1});
+    mesh.indices = {0, 1, 2, 0, 2, 3};
+    return mesh;
+}
+
+GpuMesh::GpuMesh(const MeshData& data)
+    : indexCount_(GLsizei(data.indices.size())),
+      mode_(data.primitive == Primitive::TriangleStrip ? GL_TRIANGLE_STRIP : GL_TRIANGLES) {
+    const size_t count = data.positions.size();
+    if (data.normals.size() != count || data.uvs.size() != count || data.tangents.size() != count) {
+        throw Error("GpuMesh: attribute arrays differ in length");
+    }
+    for (std::uint32_t index : data.indices) {
+        if (index >= count) throw Error("GpuMesh: index out of range");
+    }
+    // Interleaved: position, uv, normal, tangent (12 floats a vertex).
+    struct Vertex {
+        glm::vec3 position;
+        glm::vec2 uv;
+        glm::vec3 normal;
+        glm::vec4 tangent;
+    };
+    std::vector<Vertex> vertices(count);
+    for (size_t i = 0; i < count; ++i) {
+        vertices[i] = {data.positions[i], data.uvs[i], data.normals[i], data.tangents[i]};
+    }
+    glBindVertexArray(vao_.id());
+    glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(),
+                 GL_STATIC_DRAW);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(data.indices.size() * sizeof(std::uint32_t)),
+                 data.indices.data(), GL_STATIC_DRAW);
+    auto attribute = [](GLuint location, GLint size, size_t offset) {
+        glEnableVertexAttribArray(location);
+        glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                              reinterpret_cast<const void*>(offset));
+    };
+    attribute(kAttribPosition, 3, offsetof(Vertex, position));
+    attribute(kAttribUv, 2, offsetof(Vertex, uv));
+    attribute(kAttribNormal, 3, offsetof(Vertex, normal));
+    attribute(kAttribTangent, 4, offsetof(Vertex, tangent));
+    glBindVertexArray(0);
+}
+
+void GpuMesh::draw() const {
+    glBindVertexArray(vao_.id());
+    glDrawElements(mode_, indexCount_, GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace pbr

@@ -1,0 +1,18 @@
+#pragma once
+// Where the executables find their data, from any working directory.
+#include <filesystem>
+#include <string>
+
+namespace pbr {
+
+// shaders/ of the source tree, or $PBR_SHADER_DIR when set.
+std::filesystem::path shaderDir();
+// resources/ of the source tree, or $PBR_RESOURCE_DIR when set.
+std::filesystem::path resourceDir();
+// A path as a user wants to read it in a message: relative to the working directory when it lies
+// below it, absolute otherwise.
+std::string displayPath(const std::filesystem::path& path);
+// The whole file as a string; throws Error("<path>: <reason>").
+std::string readTextFile(const std::filesystem::path& path);
+
+}  // namespace pbr

@@ -1,0 +1,253 @@
+#include "shader.h"
+
+#include <cstdio>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "error.h"
+#include "paths.h"
+
+namespace pbr {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Mesa keeps the line number of `#line L S` but reports every message as source string 0, so
+// the file is encoded in the line number itself: line L of file n is numbered n * 10000 + L.
+constexpr int kLinesPerFile = 10000;
+
+std::string lineDirective(int fileId, int line) {
+    return "#line " + std::to_string(fileId * kLinesPerFile + line) + "\n";
+}
+
+struct Preprocessor {
+    fs::path includeDir;
+    ShaderSource out;
+    std::set<fs::path> included;  // canonical paths already expanded (each file once)
+    std::vector<fs::path> stack;  // files being expanded, to refuse cycles
+
+    void expand(const fs::path& file, const std::string& where) {
+        std::error_code ec;
+        fs::path canonical = fs::weakly_canonical(file, ec);
+        if (ec) canonical = file;
+        for (const fs::path& open : stack) {
+            if (open == canonical) throw Error(where + "#include cycle through " + displayPath(file));
+        }
+        if (!included.insert(canonical).second) return;
+
+        std::string text;
+        try {
+            text = readTextFile(file);
+        } catch (const Error& e) {
+            throw Error(where + e.what());
+        }
+        const int id = int(out.files.size());
+        out.files.push_back(file);
+        stack.push_back(canonical);
+        if (id != 0) out.text += lineDirective(id, 1);
+
+        static const std::regex includeLine(R"(^\s*#\s*include\s*(.*?)\s*$)");
+        static const std::regex quoted(R"("([^"]+)\")");
+        std::istringstream lines(text);
+        std::string line;
+        int number = 0;
+        while (std::getline(lines, line)) {
+            ++number;
+            std::smatch match;
+            if (!std::regex_match(line, match, includeLine)) {
+                out.text += line;
+                out.text += '\n';
+                continue;
+            }
+            const std::string here = displayPath(file) + ":" + std::to_string(number) + ": ";
+            std::smatch name;
+            const std::string argument = match[1].str();
+            if (!std::regex_match(argument, name, quoted)) {
+                throw Error(here + "#include needs a \"quoted\" file name");
+            }
+            fs::path target = file.parent_path() / name[1].str();
+            if (!fs::exists(target, ec)) target = includeDir / name[1].str();
+            if (!fs::exists(target, ec)) {
+                throw Error(here + "#include \"" + name[1].str() + "\": not found beside the file "
+                                   "or in " + displayPath(includeDir));
+            }
+            expand(target, here);
+            // Back in this file: the next line is number + 1.
+            out.text += lineDirective(id, number + 1);
+        }
+        stack.pop_back();
+    }
+};
+
+}  // namespace
+
+ShaderSource preprocessShader(const fs::path& file, const fs::path& includeDir) {
+    Preprocessor preprocessor{includeDir, {}, {}, {}};
+    preprocessor.expand(file, "");
+    return std::move(preprocessor.out);
+}
+
+std::vector<std::string> mapShaderLog(const std::string& log, const std::vector<fs::path>& files) {
+    // Mesa: "0:12(5): error: message"; NVIDIA: "0(12) : error C0000: message".
+    static const std::regex mesa(R"(^\s*(\d+):(\d+)\(\d+\):\s*(.*)$)");
+    static const std::regex nvidia(R"(^\s*(\d+)\((\d+)\)\s*:\s*(.*)$)");
+    std::vector<std::string> mapped;
+    std::istringstream lines(log);
+    std::string line;
+    while (std::getline(lines, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.find_first_not_of(" \t") == std::string::npos) continue;
+        std::smatch match;
+        if (std::regex_match(line, match, mesa) || std::regex_match(line, match, nvidia)) {
+            const long encoded = std::stol(match[2].str());
+            const size_t id = size_t(encoded / kLinesPerFile);
+            const std::string file = id < files.size() ? displayPath(files[id]) : "<unknown file>";
+            mapped.push_back(file + ":" + std::to_string(encoded % kLinesPerFile) + ": " +
+                             match[3].str());
+        } else {
+            mapped.push_back(line);
+        }
+    }
+    return mapped;
+}
+
+namespace {
+
+fs::path resolveShaderPath(const fs::path& path) {
+    return path.is_absolute() ? path : shaderDir() / path;
+}
+
+GLuint compileStage(GLenum stage, const fs::path& path) {
+    const ShaderSource source = preprocessShader(path, shaderDir() / "include");
+    const GLuint shader = glCreateShader(stage);
+    const char* text = source.text.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok) return shader;
+
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(size_t(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, GLsizei(log.size()), nullptr, log.data());
+    glDeleteShader(shader);
+    std::vector<std::string> lines = mapShaderLog(log.c_str(), source.files);
+    // The first error names the place; the count says if there is more to fix.
+    std::string first = displayPath(path) + ": compile failed";
+    for (const std::string& line : lines) {
+        if (line.find("error") != std::string::npos) {
+            first = line;
+            break;
+        }
+    }
+    if (lines.size() > 1) first += " (+" + std::to_string(lines.size() - 1) + " more)";
+    throw Error(first);
+}
+
+GlProgram linkProgram(const fs::path& vertexPath, const fs::path& fragmentPath) {
+    const GLuint vertex = compileStage(GL_VERTEX_SHADER, vertexPath);
+    GLuint fragment = 0;
+    try {
+        fragment = compileStage(GL_FRAGMENT_SHADER, fragmentPath);
+    } catch (...) {
+        glDeleteShader(vertex);
+        throw;
+    }
+    GlProgram program;
+    glAttachShader(program.id(), vertex);
+    glAttachShader(program.id(), fragment);
+    glLinkProgram(program.id());
+    glDetachShader(program.id(), vertex);
+    glDetachShader(program.id(), fragment);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(program.id(), GL_LINK_STATUS, &ok);
+    if (!ok) {
+        GLint length = 0;
+        glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &length);
+        std::string log(size_t(std::max(length, 1)), '\0');
+        glGetProgramInfoLog(program.id(), GLsizei(log.size()), nullptr, log.data());
+        throw Error(displayPath(vertexPath) + " + " + displayPath(fragmentPath) +
+                    ": link failed: " + std::string(log.c_str()));
+    }
+    return program;
+}
+
+}  // namespace
+
+Shader::Shader(fs::path vertexPath, fs::path fragmentPath)
+    : vertexPath_(resolveShaderPath(vertexPath)),
+      fragmentPath_(resolveShaderPath(fragmentPath)),
+      program_(linkProgram(vertexPath_, fragmentPath_)) {}
+
+std::string Shader::name() const {
+    return displayPath(vertexPath_) + " + " + displayPath(fragmentPath_);
+}
+
+void Shader::use() const { glUseProgram(program_.id()); }
+
+bool Shader::reload() {
+    try {
+        program_ = linkProgram(vertexPath_, fragmentPath_);
+    } catch (const Error& e) {
+        std::fprintf(stderr, "reload failed, keeping the old program: %s\n", e.what());
+        return false;
+    }
+    locations_.clear();
+    glUseProgram(program_.id());
+    for (const auto& [name, value] : values_) apply(location(name), value);
+    return true;
+}
+
+GLint Shader::location(const std::string& uniform) {
+    auto found = locations_.find(uniform);
+    if (found != locations_.end()) return found->second;
+    const GLint where = glGetUniformLocation(program_.id(), uniform.c_str());
+    if (where < 0) {
+        // A misspelt name is a classic silent bug; say so once. (A uniform the compiler removed
+        // because it is unused also lands here.)
+        std::fprintf(stderr, "note: %s: no active uniform '%s'\n", name().c_str(), uniform.c_str());
+    }
+    locations_.emplace(uniform, where);
+    return where;
+}
+
+void Shader::apply(GLint where, const Value& value) {
+    if (where < 0) return;
+    std::visit(
+        [where](const auto& v) {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, int>) glUniform1i(where, v);
+            else if constexpr (std::is_same_v<T, float>) glUniform1f(where, v);
+            else if constexpr (std::is_same_v<T, glm::vec2>) glUniform2fv(where, 1, glm::value_ptr(v));
+            else if constexpr (std::is_same_v<T, glm::vec3>) glUniform3fv(where, 1, glm::value_ptr(v));
+            else if constexpr (std::is_same_v<T, glm::vec4>) glUniform4fv(where, 1, glm::value_ptr(v));
+            else if constexpr (std::is_same_v<T, glm::mat3>) glUniformMatrix3fv(where, 1, GL_FALSE, glm::value_ptr(v));
+            else glUniformMatrix4fv(where, 1, GL_FALSE, glm::value_ptr(v));
+        },
+        value);
+}
+
+// Makes the program current first (a uniform set on the wrong program is a classic silent bug),
+// and remembers the value for reload.
+void Shader::store(const std::string& name, const Value& value) {
+    glUseProgram(program_.id());
+    apply(location(name), value);
+    values_[name] = value;
+}
+
+void Shader::set(const std::string& name, int value) { store(name, value); }
+void Shader::set(const std::string& name, float value) { store(name, value); }
+void Shader::set(const std::string& name, const glm::vec2& value) { store(name, value); }
+void Shader::set(const std::string& name, const glm::vec3& value) { store(name, value); }
+void Shader::set(const std::string& name, const glm::vec4& value) { store(name, value); }
+void Shader::set(const std::string& name, const glm::mat3& value) { store(name, value); }
+void Shader::set(const std::string& name, const glm::mat4& value) { store(name, value); }
+
+}  // namespace pbr

@@ -1,0 +1,69 @@
+#pragma once
+// A GLSL program from files: `#include "file"` (searched beside the including file, then in
+// shaders/include/), compile errors reported as `file:line: message` in the original file,
+// cached uniform locations, and reload (on R) that keeps the uniform values already set.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gl.h"
+
+namespace pbr {
+
+// The text handed to the compiler and the files it came from: line L of files[n] carries the
+// line number n * 10000 + L in `text` (see mapShaderLog).
+struct ShaderSource {
+    std::string text;
+    std::vector<std::filesystem::path> files;
+};
+
+// Expands #include directives (each file once, cycles refused) and numbers the lines so that a
+// compiler message leads back to the file. Pure: no GL.
+// Throws Error("<file>:<line>: <reason>") for a missing include, a cycle or a bad directive.
+ShaderSource preprocessShader(const std::filesystem::path& file,
+                              const std::filesystem::path& includeDir);
+
+// Rewrites a driver's info log ("0:12(5): error: ..." from Mesa, "0(12) : error ..." from
+// NVIDIA) into "<file>:<line>: error: ..." lines of the original files.
+std::vector<std::string> mapShaderLog(const std::string& log,
+                                      const std::vector<std::filesystem::path>& files);
+
+class Shader {
+public:
+    // Paths relative to shaderDir() (or absolute). Throws Error on any compile or link failure.
+    Shader(std::filesystem::path vertexPath, std::filesystem::path fragmentPath);
+
+    void use() const;
+    // Builds the program again from the files. On failure prints the error, keeps the old
+    // program and returns false. On success re-applies every uniform value set so far.
+    bool reload();
+
+    void set(const std::string& name, int value);
+    void set(const std::string& name, float value);
+    void set(const std::string& name, const glm::vec2& value);
+    void set(const std::string& name, const glm::vec3& value);
+    void set(const std::string& name, const glm::vec4& value);
+    void set(const std::string& name, const glm::mat3& value);
+    void set(const std::string& name, const glm::mat4& value);
+
+    GLuint id() const { return program_.id(); }
+    std::string name() const;
+
+private:
+    using Value = std::variant<int, float, glm::vec2, glm::vec3, glm::vec4, glm::mat3, glm::mat4>;
+    GLint location(const std::string& uniform);
+    void apply(GLint location, const Value& value);
+    void store(const std::string& name, const Value& value);
+
+    std::filesystem::path vertexPath_, fragmentPath_;
+    GlProgram program_;
+    std::unordered_map<std::string, GLint> locations_;
+    std::map<std::string, Value> values_;
+};
+
+}  // namespace pbr

@@ -1,0 +1,87 @@
+// 01 lighting: LearnOpenGL "PBR / Lighting". A 7 x 7 grid of spheres under four point lights;
+// metallic grows up the rows, roughness across the columns. See README.md beside this file.
+#include <algorithm>
+#include <array>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app.h"
+#include "error.h"
+#include "mesh.h"
+
+int main(int argc, char** argv) try {
+    pbr::App app(argc, argv,
+                 {.name = "01_lighting",
+                  .title = "01 lighting: Cook-Torrance, 4 point lights",
+                  .cameraPosition = {0.0f, 0.0f, 23.0f},  // the whole grid; the text starts at (0,0,3)
+                  .flags = {{"--lights", "N", "use the first N of the 4 point lights (default 4)"},
+                            {"--roughness-offset", "D", "add D to every sphere's roughness (default 0)"}}});
+    const int lightCount = app.flag("--lights") ? pbr::parseIntFlag("--lights", *app.flag("--lights"), 0, 4) : 4;
+    const float roughnessOffset = app.flag("--roughness-offset")
+                                      ? pbr::parseFloatFlag("--roughness-offset", *app.flag("--roughness-offset"))
+                                      : 0.0f;
+
+    pbr::Shader& shader = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
+    const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
+
+    // Constant material and the lights, set before the first frame is drawn (the text's first
+    // frame has no light uniforms yet).
+    shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
+    shader.set("ao", 1.0f);
+    const std::array<glm::vec3, 4> lightPositions = {
+        glm::vec3(-10.0f, 10.0f, 10.0f),
+        glm::vec3(10.0f, 10.0f, 10.0f),
+        glm::vec3(-10.0f, -10.0f, 10.0f),
+        glm::vec3(10.0f, -10.0f, 10.0f),
+    };
+    const glm::vec3 lightColor(300.0f, 300.0f, 300.0f);
+    shader.set("lightCount", lightCount);
+    for (int i = 0; i < 4; ++i) {
+        shader.set("lightPositions[" + std::to_string(i) + "]", lightPositions[size_t(i)]);
+        shader.set("lightColors[" + std::to_string(i) + "]", lightColor);
+    }
+
+    const int nrRows = 7;
+    const int nrColumns = 7;
+    const float spacing = 2.5f;
+
+    glEnable(GL_DEPTH_TEST);
+    while (app.nextFrame()) {
+        glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+        shader.use();
+        shader.set("projection", app.projection());
+        shader.set("view", app.view());
+        shader.set("camPos", app.camera().position());
+
+        auto drawSphere = [&](const glm::mat4& model) {
+            shader.set("model", model);
+            shader.set("normalMatrix", glm::transpose(glm::inverse(glm::mat3(model))));
+            sphere.draw();
+        };
+
+        // Metallic rises with the row (bottom row 0), roughness with the column; roughness is
+        // kept at 0.05 or above, since a perfectly smooth sphere's point-light highlight vanishes.
+        for (int row = 0; row < nrRows; ++row) {
+            shader.set("metallic", float(row) / float(nrRows));
+            for (int col = 0; col < nrColumns; ++col) {
+                const float roughness = float(col) / float(nrColumns) + roughnessOffset;
+                shader.set("roughness", std::clamp(roughness, 0.05f, 1.0f));
+                drawSphere(glm::translate(glm::mat4(1.0f),
+                                          glm::vec3(float(col - nrColumns / 2) * spacing,
+                                                    float(row - nrRows / 2) * spacing, 0.0f)));
+            }
+        }
+
+        // The lights themselves, as small spheres in the same shader, so their places show.
+        for (int i = 0; i < lightCount; ++i) {
+            drawSphere(glm::scale(glm::translate(glm::mat4(1.0f), lightPositions[size_t(i)]),
+                                  glm::vec3(0.5f)));
+        }
+    }
+    return 0;
+} catch (...) {
+    return pbr::reportFailure();
+}
