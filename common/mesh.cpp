@@ -73,8 +73,8 @@ MeshData uvSphereTriangles(int xSegments, int ySegments) {
         for (int x = 0; x < xSegments; ++x) {
             const std::uint32_t a = std::uint32_t(y) * rowLength + std::uint32_t(x);
             const std::uint32_t b = a + rowLength;
-            // Same winding as the strip's first triangle (top, bottom, top + 1).
-            mesh.indices.insert(mesh.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+            // Counter-clockwise seen from outside, so back-face culling works on the list.
+            mesh.indices.insert(mesh.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
         }
     }
     return mesh;

@@ -1,0 +1,146 @@
+// Every bad input gets one line naming the thing and the reason, and a non-zero exit.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "paths.h"
+#include "support/golden.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The line number of the first line of `file` that contains `text` (1-based), found by reading
+// the file: the expected number comes from the file, not from the program under test.
+int lineOf(const fs::path& file, const std::string& text) {
+    std::ifstream in(file);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (line.find(text) != std::string::npos) return number;
+    }
+    return -1;
+}
+
+void replaceInFile(const fs::path& file, const std::string& from, const std::string& to) {
+    std::string text = readTextFile(file);
+    const size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from << " not in " << file;
+    text.replace(at, from.size(), to);
+    std::ofstream(file, std::ios::trunc) << text;
+}
+
+// A copy of shaders/ to break.
+fs::path copyShaders(const fs::path& dir) {
+    const fs::path copy = dir / "shaders";
+    fs::copy(PBR_SOURCE_SHADER_DIR, copy, fs::copy_options::recursive);
+    return copy;
+}
+
+TEST(Cli, UnknownFlagIsOneLineThenUsageExit2) {
+    const RunResult run = runSample({"01_lighting", "--headless", "--bogus"});
+    EXPECT_EQ(run.exitCode, 2);
+    const auto lines = run.errLines();
+    ASSERT_FALSE(lines.empty());
+    EXPECT_EQ(lines[0], "error: unknown flag '--bogus'");
+    ASSERT_GE(lines.size(), 2u);
+    EXPECT_EQ(lines[1].rfind("usage: 01_lighting", 0), 0u) << lines[1];
+}
+
+TEST(Cli, BadFlagValuesNameTheFlag) {
+    const std::vector<std::vector<std::string>> cases = {
+        {"--size", "0x360"}, {"--size", "640"}, {"--msaa", "3"}, {"--frames", "0"},
+        {"--camera", "1,2"}, {"--time", "soon"}, {"--lights", "5"}, {"--output"},
+    };
+    for (const auto& args : cases) {
+        std::vector<std::string> argv = {"01_lighting", "--headless"};
+        argv.insert(argv.end(), args.begin(), args.end());
+        const RunResult run = runSample(argv);
+        EXPECT_EQ(run.exitCode, 2) << args[0];
+        const auto lines = run.errLines();
+        ASSERT_FALSE(lines.empty()) << args[0];
+        EXPECT_EQ(lines[0].rfind("error: " + args[0], 0), 0u) << lines[0];
+    }
+}
+
+TEST(Cli, HelpPrintsUsageAndExits0) {
+    const RunResult run = runSample({"01_lighting", "--help"});
+    EXPECT_EQ(run.exitCode, 0);
+    EXPECT_NE(run.out.find("--headless"), std::string::npos);
+    EXPECT_NE(run.out.find("--lights N"), std::string::npos);
+    EXPECT_TRUE(run.err.empty()) << run.err;
+}
+
+TEST(Cli, MissingShaderFileIsNamed) {
+    const fs::path dir = testOutputDir("cli_missing_shader");
+    const fs::path shaders = copyShaders(dir);
+    fs::remove(shaders / "01_lighting" / "pbr.frag");
+    const RunResult run = runSample({"01_lighting", "--headless", "--output", (dir / "x.png").string()},
+                                    {.setEnv = {{"PBR_SHADER_DIR", shaders.string()}}});
+    EXPECT_EQ(run.exitCode, 1);
+    const auto lines = run.errLines();
+    ASSERT_EQ(lines.size(), 1u) << run.err;
+    EXPECT_NE(lines[0].find("01_lighting/pbr.frag: cannot open"), std::string::npos) << lines[0];
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+TEST(Cli, CompileErrorPointsAtTheLineInTheFile) {
+    const fs::path dir = testOutputDir("cli_compile_error");
+    const fs::path shaders = copyShaders(dir);
+    const fs::path frag = shaders / "01_lighting" / "pbr.frag";
+    replaceInFile(frag, "vec3 V = normalize(camPos - WorldPos);",
+                  "vec3 V = normalize(camPos - WorldPos) * roughnes;");
+    const int line = lineOf(frag, "roughnes;");
+    ASSERT_GT(line, 0);
+    const RunResult run = runSample({"01_lighting", "--headless", "--output", (dir / "x.png").string()},
+                                    {.setEnv = {{"PBR_SHADER_DIR", shaders.string()}}});
+    EXPECT_EQ(run.exitCode, 1);
+    const auto lines = run.errLines();
+    ASSERT_EQ(lines.size(), 1u) << run.err;
+    const std::string where = "01_lighting/pbr.frag:" + std::to_string(line) + ": ";
+    EXPECT_NE(lines[0].find(where), std::string::npos) << lines[0] << " (expected " << where << ")";
+    EXPECT_NE(lines[0].find("roughnes"), std::string::npos) << lines[0];
+}
+
+TEST(Cli, CompileErrorInAnIncludeNamesTheIncludedFile) {
+    const fs::path dir = testOutputDir("cli_include_error");
+    const fs::path shaders = copyShaders(dir);
+    const fs::path brdf = shaders / "include" / "brdf.glsl";
+    replaceInFile(brdf, "float a2 = a * a;", "float a2 = a * alpha;");
+    const int line = lineOf(brdf, "a * alpha;");
+    ASSERT_GT(line, 0);
+    const RunResult run = runSample({"01_lighting", "--headless", "--output", (dir / "x.png").string()},
+                                    {.setEnv = {{"PBR_SHADER_DIR", shaders.string()}}});
+    EXPECT_EQ(run.exitCode, 1);
+    const auto lines = run.errLines();
+    ASSERT_EQ(lines.size(), 1u) << run.err;
+    const std::string where = "include/brdf.glsl:" + std::to_string(line) + ": ";
+    EXPECT_NE(lines[0].find(where), std::string::npos) << lines[0] << " (expected " << where << ")";
+}
+
+TEST(Cli, UnwritableOutputIsNamed) {
+    const RunResult run = runSample({"01_lighting", "--headless", "--size", "64x36", "--output",
+                                     "/proc/no-such-dir/out.png"});
+    EXPECT_EQ(run.exitCode, 1);
+    const auto lines = run.errLines();
+    ASSERT_EQ(lines.size(), 1u) << run.err;
+    EXPECT_NE(lines[0].find("/proc/no-such-dir/out.png"), std::string::npos) << lines[0];
+}
+
+// The main command with no display: no --headless, yet it renders offscreen, writes
+// 01_lighting.png in the working directory and says where.
+TEST(Cli, NoDisplayFallsBackToOffscreen) {
+    const fs::path dir = testOutputDir("cli_no_display");
+    const RunResult run = runSample({"01_lighting", "--size", "320x180"},
+                                    {.unsetEnv = {"DISPLAY", "WAYLAND_DISPLAY"}, .workingDirectory = dir});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("no display"), std::string::npos) << run.err;
+    const fs::path written = dir / "01_lighting.png";
+    EXPECT_TRUE(fs::exists(written));
+    EXPECT_NE(run.out.find(written.string()), std::string::npos) << run.out;
+}
+
+}  // namespace
+}  // namespace pbr::test

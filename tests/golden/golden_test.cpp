@@ -1,0 +1,124 @@
+// Golden images of the samples, and the proofs that the comparison means something: it rejects a
+// small change, headless output repeats bit for bit, and MSAA changes edges only.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+
+#include "support/golden.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string bytesOf(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// A sample's headless run must succeed with zero GL errors reported.
+void expectCleanRun(const SampleRender& render) {
+    EXPECT_EQ(render.run.exitCode, 0) << render.run.err;
+    EXPECT_EQ(render.run.err.find("GL error"), std::string::npos) << render.run.err;
+    EXPECT_FALSE(render.renderer.empty()) << "no 'wrote' line in: " << render.run.out;
+}
+
+// The picture is not blank: at least `minShare` of the pixels differ from the top-left corner
+// (the clear colour) by more than a few levels.
+void expectNotBlank(const Image& image, double minShare) {
+    size_t differing = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                if (std::abs(int(image.at(x, y, c)) - int(image.at(0, 0, c))) > 8) {
+                    ++differing;
+                    break;
+                }
+            }
+        }
+    }
+    EXPECT_GT(double(differing) / (double(image.width) * image.height), minShare);
+}
+
+TEST(Golden, Lighting01MatchesGolden) {
+    const fs::path dir = testOutputDir("golden_01_lighting");
+    const SampleRender render = renderSample("01_lighting", dir / "01_lighting.png");
+    expectCleanRun(render);
+    const Image image = readImage(render.image, 3);
+    EXPECT_EQ(image.width, 1280);
+    EXPECT_EQ(image.height, 720);
+    expectNotBlank(image, 0.15);  // 49 spheres cover about a quarter of the frame
+    EXPECT_TRUE(matchesGolden("01_lighting", render.image, render.renderer));
+}
+
+// The gate must catch a small, real change: roughness + 0.05 on every sphere, or one light of the
+// four gone; the unchanged render (the test above) passes it.
+TEST(Golden, GateRejectsSmallChanges) {
+    const fs::path dir = testOutputDir("golden_gate");
+    const Image golden = readImage(fs::path(PBR_GOLDEN_DIR) / "01_lighting.png", 3);
+    const GoldenGate gate;
+
+    const SampleRender fresh = renderSample("01_lighting", dir / "fresh.png");
+    expectCleanRun(fresh);
+    const GoldenVerdict same = judge(readImage(fresh.image, 3), golden, gate);
+    EXPECT_TRUE(same.pass) << same.summary;
+
+    const SampleRender rougher =
+        renderSample("01_lighting", dir / "rougher.png", {"--roughness-offset", "0.05"});
+    expectCleanRun(rougher);
+    const GoldenVerdict roughVerdict = judge(readImage(rougher.image, 3), golden, gate);
+    EXPECT_FALSE(roughVerdict.pass) << "roughness + 0.05 passed the gate: " << roughVerdict.summary;
+    std::printf("roughness + 0.05: %s\n", roughVerdict.summary.c_str());
+
+    const SampleRender threeLights = renderSample("01_lighting", dir / "three.png", {"--lights", "3"});
+    expectCleanRun(threeLights);
+    const GoldenVerdict lightVerdict = judge(readImage(threeLights.image, 3), golden, gate);
+    EXPECT_FALSE(lightVerdict.pass) << "a missing light passed the gate: " << lightVerdict.summary;
+    std::printf("3 lights: %s\n", lightVerdict.summary.c_str());
+}
+
+TEST(Golden, HeadlessOutputIsBitIdentical) {
+    const fs::path dir = testOutputDir("golden_determinism");
+    const std::vector<std::string> args = {"--size", "640x360"};
+    const SampleRender first = renderSample("01_lighting", dir / "first.png", args);
+    const SampleRender second = renderSample("01_lighting", dir / "second.png", args);
+    expectCleanRun(first);
+    expectCleanRun(second);
+    const std::string a = bytesOf(first.image), b = bytesOf(second.image);
+    ASSERT_FALSE(a.empty());
+    EXPECT_TRUE(a == b) << "two headless renders differ in their bytes";
+}
+
+// Headless MSAA is real: with 4 samples the picture changes, and only at edges (where the
+// single-sample render jumps between neighbouring pixels).
+TEST(Golden, MsaaSmoothsEdgesOnly) {
+    const fs::path dir = testOutputDir("golden_msaa");
+    const SampleRender off = renderSample("01_lighting", dir / "off.png", {"--size", "640x360", "--msaa", "0"});
+    const SampleRender on = renderSample("01_lighting", dir / "on.png", {"--size", "640x360", "--msaa", "4"});
+    expectCleanRun(off);
+    expectCleanRun(on);
+    const Image a = readImage(off.image, 3), b = readImage(on.image, 3);
+    size_t changed = 0, changedAwayFromEdges = 0;
+    for (int y = 1; y + 1 < a.height; ++y) {
+        for (int x = 1; x + 1 < a.width; ++x) {
+            int diff = 0;
+            for (int c = 0; c < 3; ++c) diff = std::max(diff, std::abs(int(a.at(x, y, c)) - int(b.at(x, y, c))));
+            if (diff <= 2) continue;
+            ++changed;
+            int spread = 0;  // the largest step to a neighbour in the single-sample picture
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    for (int c = 0; c < 3; ++c)
+                        spread = std::max(spread, std::abs(int(a.at(x + dx, y + dy, c)) - int(a.at(x, y, c))));
+            if (spread < 6) ++changedAwayFromEdges;
+        }
+    }
+    EXPECT_GT(changed, 500u) << "4x MSAA changed almost nothing";
+    EXPECT_LT(double(changed) / (double(a.width) * a.height), 0.05) << "MSAA changed more than edges";
+    EXPECT_LT(double(changedAwayFromEdges), 0.02 * double(changed)) << "MSAA changed flat areas";
+}
+
+}  // namespace
+}  // namespace pbr::test

@@ -1,0 +1,81 @@
+#include "support/process.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace pbr::test {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> RunResult::errLines() const {
+    std::vector<std::string> lines;
+    std::istringstream in(err);
+    std::string line;
+    while (std::getline(in, line)) lines.push_back(line);
+    return lines;
+}
+
+fs::path sampleExecutable(const std::string& name) { return fs::path(PBR_SAMPLE_BIN_DIR) / name; }
+
+fs::path testOutputDir(const std::string& name) {
+    const fs::path dir = fs::path(PBR_TEST_OUTPUT_DIR) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+namespace {
+std::string slurp(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+}  // namespace
+
+RunResult runSample(std::vector<std::string> argv, const RunOptions& options) {
+    if (argv.empty()) throw std::invalid_argument("runSample: empty argv");
+    if (argv[0].find('/') == std::string::npos) argv[0] = sampleExecutable(argv[0]).string();
+
+    char outName[] = "/tmp/pbr-test-out-XXXXXX";
+    char errName[] = "/tmp/pbr-test-err-XXXXXX";
+    const int outFd = mkstemp(outName);
+    const int errFd = mkstemp(errName);
+    if (outFd < 0 || errFd < 0) throw std::runtime_error("runSample: mkstemp failed");
+
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("runSample: fork failed");
+    if (pid == 0) {
+        dup2(outFd, 1);
+        dup2(errFd, 2);
+        const int devNull = open("/dev/null", O_RDONLY);
+        if (devNull >= 0) dup2(devNull, 0);
+        for (const auto& [name, value] : options.setEnv) setenv(name.c_str(), value.c_str(), 1);
+        for (const std::string& name : options.unsetEnv) unsetenv(name.c_str());
+        if (!options.workingDirectory.empty() && chdir(options.workingDirectory.c_str()) != 0) _exit(126);
+        std::vector<char*> args;
+        for (std::string& arg : argv) args.push_back(arg.data());
+        args.push_back(nullptr);
+        execv(args[0], args.data());
+        _exit(127);
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    close(outFd);
+    close(errFd);
+    RunResult result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    result.out = slurp(outName);
+    result.err = slurp(errName);
+    fs::remove(outName);
+    fs::remove(errName);
+    return result;
+}
+
+}  // namespace pbr::test

@@ -1,0 +1,33 @@
+#pragma once
+// Runs a sample as a child process and captures what it printed, for tests that check exit codes,
+// messages and the images it writes.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace pbr::test {
+
+struct RunResult {
+    int exitCode = -1;  // -1: killed by a signal (a crash)
+    std::string out;
+    std::string err;
+    std::vector<std::string> errLines() const;
+};
+
+struct RunOptions {
+    std::map<std::string, std::string> setEnv{};  // variables to set
+    std::vector<std::string> unsetEnv{};          // variables to remove
+    std::filesystem::path workingDirectory{};     // empty: inherit
+};
+
+// argv[0] is a sample name ("01_lighting") or a path.
+RunResult runSample(std::vector<std::string> argv, const RunOptions& options = {});
+
+// A fresh, empty folder under the build's test-output/ for one test.
+std::filesystem::path testOutputDir(const std::string& name);
+
+// The full path of a sample executable.
+std::filesystem::path sampleExecutable(const std::string& name);
+
+}  // namespace pbr::test

@@ -1,0 +1,80 @@
+// Properties of the CPU BRDF that hold by mathematics, independent of any render.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "brdf.h"
+
+namespace pbr::cpu {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// The GGX distribution is normalised: the projected area of the microfacets is the macro
+// surface, integral of D(h) (n.h) over the hemisphere = 1.
+TEST(Brdf, GgxDistributionIsNormalised) {
+    const glm::vec3 N(0, 0, 1);
+    for (float roughness : {0.3f, 0.5f, 0.8f, 1.0f}) {
+        double integral = 0.0;
+        const int steps = 2000;
+        for (int i = 0; i < steps; ++i) {
+            const double theta = (i + 0.5) / steps * (kPi / 2.0);
+            const glm::vec3 H(float(std::sin(theta)), 0.0f, float(std::cos(theta)));
+            // azimuthally symmetric: d(omega) = 2 pi sin(theta) d(theta)
+            integral += DistributionGGX(N, H, roughness) * std::cos(theta) * 2.0 * kPi *
+                        std::sin(theta) * (kPi / 2.0 / steps);
+        }
+        EXPECT_NEAR(integral, 1.0, 2e-3) << "roughness " << roughness;
+    }
+}
+
+TEST(Brdf, FresnelSchlickEndPoints) {
+    const glm::vec3 F0(0.04f, 0.5f, 0.9f);
+    const glm::vec3 headOn = fresnelSchlick(1.0f, F0);
+    const glm::vec3 grazing = fresnelSchlick(0.0f, F0);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_FLOAT_EQ(headOn[c], F0[c]);
+        EXPECT_FLOAT_EQ(grazing[c], 1.0f);
+    }
+    // halfway, by the formula F0 + (1 - F0) (1 - cos)^5
+    EXPECT_NEAR(fresnelSchlick(0.5f, F0).x, 0.04f + 0.96f / 32.0f, 1e-6f);
+}
+
+TEST(Brdf, SchlickGgxGeometryIsOneHeadOnAndFallsAtGrazing) {
+    for (float roughness : {0.05f, 0.5f, 1.0f}) {
+        EXPECT_FLOAT_EQ(GeometrySchlickGGX(1.0f, roughness), 1.0f);
+        EXPECT_FLOAT_EQ(GeometrySchlickGGX(0.0f, roughness), 0.0f);
+        // k = (r + 1)^2 / 8, so at NdotV = 0.5: 0.5 / (0.5 (1 - k) + k)
+        const float k = (roughness + 1.0f) * (roughness + 1.0f) / 8.0f;
+        EXPECT_NEAR(GeometrySchlickGGX(0.5f, roughness), 0.5f / (0.5f * (1.0f - k) + k), 1e-6f);
+    }
+}
+
+// A Lambertian surface (roughness 1, dielectric, no specular worth speaking of aside) lit head-on
+// by one light: the diffuse part is kD * albedo / pi * radiance.
+TEST(Brdf, HeadOnLightOnAMatteSurface) {
+    SurfacePoint s;
+    s.position = {0, 0, 0};
+    s.normal = {0, 0, 1};
+    s.albedo = {1, 1, 1};
+    s.metallic = 0.0f;
+    s.roughness = 1.0f;
+    s.ao = 0.0f;  // no ambient
+    const PointLight light{{0, 0, 2}, {4, 4, 4}};  // radiance 4 / 2^2 = 1
+    const glm::vec3 Lo = shadePointLights(s, {0, 0, 5}, std::span(&light, 1));
+    const float F = 0.04f;  // head-on Fresnel of a dielectric
+    const float diffuse = (1.0f - F) / float(kPi);
+    // specular: D(r=1) = 1/pi, G = 1 head-on, F = 0.04, / (4 + 0.001)
+    const float specular = (1.0f / float(kPi)) * F / (4.0f + 0.001f);
+    EXPECT_NEAR(Lo.x, diffuse + specular, 1e-5f);
+}
+
+TEST(Brdf, ReinhardGammaMapsZeroOneAndInfinity) {
+    EXPECT_FLOAT_EQ(reinhardGamma(glm::vec3(0.0f)).x, 0.0f);
+    EXPECT_NEAR(reinhardGamma(glm::vec3(1.0f)).x, std::pow(0.5f, 1.0f / 2.2f), 1e-6f);
+    EXPECT_NEAR(reinhardGamma(glm::vec3(1e9f)).x, 1.0f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace pbr::cpu

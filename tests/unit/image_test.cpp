@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "error.h"
+#include "image.h"
+
+namespace pbr {
+namespace {
+
+namespace fs = std::filesystem;
+
+Image solid(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+    Image image{width, height, 3, std::vector<std::uint8_t>(size_t(width * height) * 3)};
+    for (size_t i = 0; i < image.pixels.size(); i += 3) {
+        image.pixels[i] = r;
+        image.pixels[i + 1] = g;
+        image.pixels[i + 2] = b;
+    }
+    return image;
+}
+
+fs::path tempDir() {
+    const fs::path dir = fs::temp_directory_path() / ("pbr-image-test-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+TEST(Image, PngRoundTripKeepsEveryByte) {
+    Image image{7, 5, 3, {}};
+    for (int i = 0; i < 7 * 5 * 3; ++i) image.pixels.push_back(std::uint8_t(i * 37 % 256));
+    const fs::path path = tempDir() / "roundtrip.png";
+    writePng(path, image);
+    const Image back = readImage(path);
+    EXPECT_EQ(back.width, 7);
+    EXPECT_EQ(back.height, 5);
+    EXPECT_EQ(back.channels, 3);
+    EXPECT_EQ(back.pixels, image.pixels);
+}
+
+TEST(Image, FlipRowsReversesRowOrder) {
+    Image image{1, 3, 1, {10, 20, 30}};
+    EXPECT_EQ(flipRows(image).pixels, (std::vector<std::uint8_t>{30, 20, 10}));
+}
+
+TEST(Image, IdenticalImagesHaveNoDifference) {
+    const Image a = solid(4, 4, 10, 20, 30);
+    const ImageDiff diff = compareImages(a, a, 0);
+    EXPECT_EQ(diff.maxChannelDiff, 0);
+    EXPECT_EQ(diff.pixelsOverThreshold, 0u);
+    EXPECT_TRUE(std::isinf(diff.psnr));
+}
+
+TEST(Image, MetricsOfOneChangedPixel) {
+    const Image a = solid(10, 10, 100, 100, 100);
+    Image b = a;
+    b.pixels[3 * 42 + 1] = 110;  // pixel 42, green, +10
+    const ImageDiff diff = compareImages(b, a, 2);
+    EXPECT_EQ(diff.maxChannelDiff, 10);
+    EXPECT_EQ(diff.pixelsOverThreshold, 1u);
+    EXPECT_DOUBLE_EQ(diff.fractionOverThreshold, 0.01);
+    // MSE = 10^2 / (10 * 10 * 3) samples
+    const double mse = 100.0 / 300.0;
+    EXPECT_NEAR(diff.psnr, 10.0 * std::log10(255.0 * 255.0 / mse), 1e-9);
+    EXPECT_EQ(compareImages(b, a, 10).pixelsOverThreshold, 0u);  // "more than" the threshold
+}
+
+TEST(Image, DifferenceImageAmplifies) {
+    const Image a = solid(2, 1, 50, 50, 50);
+    Image b = a;
+    b.pixels[0] = 53;    // +3 red on the first pixel
+    b.pixels[5] = 0;     // -50 blue on the second
+    const Image diff = differenceImage(b, a, 16);
+    EXPECT_EQ(diff.at(0, 0, 0), 48);
+    EXPECT_EQ(diff.at(0, 0, 1), 0);
+    EXPECT_EQ(diff.at(1, 0, 2), 255);  // clamped
+}
+
+TEST(Image, SizeMismatchIsAnError) {
+    EXPECT_THROW(compareImages(solid(2, 2, 0, 0, 0), solid(2, 3, 0, 0, 0), 0), Error);
+}
+
+TEST(Image, BadFilesNameThePathAndTheReason) {
+    const fs::path dir = tempDir();
+    auto messageOf = [](const fs::path& path) {
+        try {
+            readImage(path);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string missing = messageOf(dir / "missing.png");
+    EXPECT_NE(missing.find("missing.png: no such file"), std::string::npos) << missing;
+
+    std::ofstream(dir / "empty.png").close();
+    const std::string empty = messageOf(dir / "empty.png");
+    EXPECT_NE(empty.find("empty.png: empty file"), std::string::npos) << empty;
+
+    std::ofstream(dir / "text.png") << "this is not a picture\n";
+    const std::string text = messageOf(dir / "text.png");
+    EXPECT_NE(text.find("text.png: cannot decode image"), std::string::npos) << text;
+
+    // A PNG cut in half.
+    Image image = solid(64, 64, 1, 2, 3);
+    for (size_t i = 0; i < image.pixels.size(); ++i) image.pixels[i] = std::uint8_t(i * 7919 % 251);
+    writePng(dir / "whole.png", image);
+    std::ifstream in(dir / "whole.png", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(dir / "half.png", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+    const std::string half = messageOf(dir / "half.png");
+    EXPECT_NE(half.find("half.png: cannot decode image"), std::string::npos) << half;
+}
+
+}  // namespace
+}  // namespace pbr
