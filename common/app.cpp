@@ -78,10 +78,11 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
         camera_ = FlyCamera(config_.cameraPosition, config_.cameraYaw, config_.cameraPitch);
     }
 
-    if (options_.frames) {
+    if (options_.benchmark) {
+        // One more than measured: the first frame compiles shader variants and is not counted.
+        framesWanted_ = options_.frames.value_or(kBenchmarkFrames) + 1;
+    } else if (options_.frames) {
         framesWanted_ = *options_.frames;
-    } else if (options_.benchmark) {
-        framesWanted_ = kBenchmarkFrames + 1;  // the first frame warms up and is not counted
     } else {
         framesWanted_ = headless() ? 1 : 0;
     }

@@ -21,7 +21,8 @@ constexpr CommonFlag kCommonFlags[] = {
     {"--headless", nullptr, "render offscreen (no window) and write the last frame to --output"},
     {"--output", "FILE.png", "where the headless frame goes (default: <sample>.png)"},
     {"--size", "WxH", "framebuffer size in pixels (default 1280x720)"},
-    {"--frames", "N", "frames to render, then exit (default: 1 headless, 30 with --benchmark)"},
+    {"--frames", "N", "frames to render, then exit (default: 1 headless; with --benchmark: frames\n"
+     "                            measured, default 30, after one warm-up frame)"},
     {"--time", "T", "fixed scene time in seconds (headless default 0)"},
     {"--msaa", "N", "samples per pixel: 0/1 (off), 2, 4, 8 (default 4)"},
     {"--camera", "x,y,z[,yaw,pitch]", "camera start position (and yaw/pitch in degrees)"},
