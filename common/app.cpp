@@ -39,7 +39,8 @@ std::string jsonEscape(const std::string& text) {
 
 App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (config_.title.empty()) config_.title = config_.name;
-    usage_ = usageText(argc > 0 ? fs::path(argv[0]).filename().string() : config_.name, config_.flags);
+    usage_ =
+        usageText(argc > 0 ? fs::path(argv[0]).filename().string() : config_.name, config_.flags);
     std::vector<std::string> args(argv + std::min(argc, 1), argv + argc);
     try {
         options_ = parseOptions(args, config_.flags);
@@ -68,7 +69,8 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     installDebugOutput();
     const glm::ivec2 size = context_->windowed() ? context_->framebufferSize()
                                                  : glm::ivec2(options_.width, options_.height);
-    target_ = std::make_unique<RenderTarget>(std::max(size.x, 1), std::max(size.y, 1), options_.msaa);
+    target_ =
+        std::make_unique<RenderTarget>(std::max(size.x, 1), std::max(size.y, 1), options_.msaa);
 
     if (options_.camera) {
         const CameraStart& start = *options_.camera;
@@ -109,7 +111,9 @@ Shader& App::shader(const std::string& vertex, const std::string& fragment) {
     return shaders_.emplace_back(vertex, fragment);
 }
 
-void App::bindRenderTarget() const { target_->bind(); }
+void App::bindRenderTarget() const {
+    target_->bind();
+}
 
 std::string App::renderer() const {
     const GLubyte* text = glGetString(GL_RENDERER);
@@ -157,7 +161,8 @@ bool App::nextFrame() {
 
     if (context_->windowed()) {
         const glm::ivec2 size = context_->framebufferSize();
-        if (size.x > 0 && size.y > 0 && (size.x != target_->width() || size.y != target_->height())) {
+        if (size.x > 0 && size.y > 0 &&
+            (size.x != target_->width() || size.y != target_->height())) {
             target_ = std::make_unique<RenderTarget>(size.x, size.y, options_.msaa);
         }
     }
@@ -170,7 +175,8 @@ void App::endFrame() {
     target_->resolve();
     if (options_.benchmark) {
         glFinish();  // the frame's time includes the GPU's work, not just the submission
-        if (frameIndex_ > 0) frameMilliseconds_.push_back((context_->seconds() - frameStart_) * 1000.0);
+        if (frameIndex_ > 0)
+            frameMilliseconds_.push_back((context_->seconds() - frameStart_) * 1000.0);
     }
     if (screenshotCount_ > 0 && context_->windowed()) {
         writeFrame("screenshot-" + config_.name + "-" + std::to_string(frameIndex_) + ".png",
@@ -199,7 +205,8 @@ void App::finish() {
     if (frameIndex_ >= 0) {
         const bool wantImage = !options_.output.empty() || (headless() && !options_.benchmark);
         if (wantImage) {
-            const std::string path = options_.output.empty() ? config_.name + ".png" : options_.output;
+            const std::string path =
+                options_.output.empty() ? config_.name + ".png" : options_.output;
             writeFrame(path, "wrote");
         }
     }
@@ -215,13 +222,13 @@ void App::finish() {
     }
     std::fflush(stdout);
     if (glErrorCount_ > 0) {
-        throw Error(std::to_string(glErrorCount_) + " OpenGL error(s) during the run; first: " +
-                    firstGlError_);
+        throw Error(std::to_string(glErrorCount_) +
+                    " OpenGL error(s) during the run; first: " + firstGlError_);
     }
 }
 
-void GLAD_API_PTR App::onDebugMessage(GLenum source, GLenum type, GLuint, GLenum severity,
-                                      GLsizei, const GLchar* message, const void* user) {
+void GLAD_API_PTR App::onDebugMessage(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei,
+                                      const GLchar* message, const void* user) {
     // The compiler's messages come back mapped to file:line through Shader; not here.
     if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) return;
     App* app = static_cast<App*>(const_cast<void*>(user));

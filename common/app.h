@@ -26,12 +26,12 @@
 namespace pbr {
 
 struct AppConfig {
-    std::string name;                  // "01_lighting": the default output file and window title
-    std::string title;                 // window title; empty: the name
+    std::string name{};   // "01_lighting": the default output file and window title
+    std::string title{};  // window title; empty: the name
     glm::vec3 cameraPosition{0.0f, 0.0f, 3.0f};  // default start, unless --camera says otherwise
     float cameraYaw = FlyCamera::kDefaultYaw;
     float cameraPitch = FlyCamera::kDefaultPitch;
-    std::vector<FlagSpec> flags;       // the sample's own flags
+    std::vector<FlagSpec> flags{};  // the sample's own flags
 };
 
 class App {
@@ -81,12 +81,12 @@ private:
     AppConfig config_;
     Options options_;
     std::string usage_;
-    std::unique_ptr<Context> context_;        // first member: destroyed last
+    std::unique_ptr<Context> context_;  // first member: destroyed last
     std::unique_ptr<RenderTarget> target_;
     std::deque<Shader> shaders_;
     FlyCamera camera_;
 
-    int framesWanted_ = 0;                    // 0: until the window closes
+    int framesWanted_ = 0;  // 0: until the window closes
     int frameIndex_ = -1;
     float time_ = 0.0f, deltaTime_ = 0.0f;
     double lastSeconds_ = 0.0;

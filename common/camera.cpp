@@ -15,10 +15,18 @@ FlyCamera::FlyCamera(glm::vec3 position, float yaw, float pitch)
 void FlyCamera::processKeyboard(CameraMove direction, float deltaTime) {
     const float distance = movementSpeed * deltaTime;
     switch (direction) {
-        case CameraMove::Forward: position_ += front_ * distance; break;
-        case CameraMove::Backward: position_ -= front_ * distance; break;
-        case CameraMove::Left: position_ -= right_ * distance; break;
-        case CameraMove::Right: position_ += right_ * distance; break;
+        case CameraMove::Forward:
+            position_ += front_ * distance;
+            break;
+        case CameraMove::Backward:
+            position_ -= front_ * distance;
+            break;
+        case CameraMove::Left:
+            position_ -= right_ * distance;
+            break;
+        case CameraMove::Right:
+            position_ += right_ * distance;
+            break;
     }
 }
 
@@ -33,7 +41,9 @@ void FlyCamera::processMouseScroll(float yOffset) {
     zoom_ = std::clamp(zoom_ - yOffset, 1.0f, kDefaultZoom);
 }
 
-glm::mat4 FlyCamera::viewMatrix() const { return glm::lookAt(position_, position_ + front_, up_); }
+glm::mat4 FlyCamera::viewMatrix() const {
+    return glm::lookAt(position_, position_ + front_, up_);
+}
 
 glm::mat4 FlyCamera::projectionMatrix(float aspect) const {
     return glm::perspective(glm::radians(zoom_), aspect, kNear, kFar);

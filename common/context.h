@@ -22,11 +22,11 @@ class Context {
 public:
     virtual ~Context() = default;
     virtual bool windowed() const = 0;
-    virtual std::string backend() const = 0;    // "glfw", "osmesa"
+    virtual std::string backend() const = 0;  // "glfw", "osmesa"
     virtual glm::ivec2 framebufferSize() const = 0;
     virtual InputFrame pollInput() { return {}; }
     virtual void swapBuffers() {}
-    virtual double seconds() const = 0;         // monotonic clock
+    virtual double seconds() const = 0;  // monotonic clock
     virtual void setVsync(bool) {}
 };
 

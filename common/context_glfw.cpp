@@ -15,7 +15,9 @@ namespace {
 
 std::string lastGlfwError;
 
-void onGlfwError(int, const char* description) { lastGlfwError = description ? description : ""; }
+void onGlfwError(int, const char* description) {
+    lastGlfwError = description ? description : "";
+}
 
 class GlfwContext final : public Context {
 public:

@@ -29,17 +29,24 @@ class OsMesaContext final : public Context {
 public:
     OsMesaContext(int width, int height) : width_(width), height_(height) {
         const int attributes[] = {
-            OSMESA_FORMAT, OSMESA_RGBA,
-            OSMESA_DEPTH_BITS, 24,
-            OSMESA_STENCIL_BITS, 8,
-            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-            OSMESA_CONTEXT_MAJOR_VERSION, 3,
-            OSMESA_CONTEXT_MINOR_VERSION, 3,
+            OSMESA_FORMAT,
+            OSMESA_RGBA,
+            OSMESA_DEPTH_BITS,
+            24,
+            OSMESA_STENCIL_BITS,
+            8,
+            OSMESA_PROFILE,
+            OSMESA_CORE_PROFILE,
+            OSMESA_CONTEXT_MAJOR_VERSION,
+            3,
+            OSMESA_CONTEXT_MINOR_VERSION,
+            3,
             0,
         };
         context_ = OSMesaCreateContextAttribs(attributes, nullptr);
         if (!context_) {
-            throw Error("osmesa: cannot create a GL 3.3 core context (OSMesaCreateContextAttribs failed)");
+            throw Error(
+                "osmesa: cannot create a GL 3.3 core context (OSMesaCreateContextAttribs failed)");
         }
         // We render into our own framebuffer objects; this buffer only has to exist.
         buffer_.resize(size_t(width) * size_t(height) * 4);

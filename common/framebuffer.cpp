@@ -9,11 +9,16 @@ namespace pbr {
 namespace {
 std::string statusName(GLenum status) {
     switch (status) {
-        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "incomplete attachment";
-        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT: return "missing attachment";
-        case GL_FRAMEBUFFER_UNSUPPORTED: return "unsupported format combination";
-        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "sample counts differ";
-        default: return "status " + std::to_string(status);
+        case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
+            return "incomplete attachment";
+        case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+            return "missing attachment";
+        case GL_FRAMEBUFFER_UNSUPPORTED:
+            return "unsupported format combination";
+        case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE:
+            return "sample counts differ";
+        default:
+            return "status " + std::to_string(status);
     }
 }
 
@@ -64,7 +69,8 @@ void RenderTarget::resolve() const {
     if (samples_ == 0) return;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_.id());
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
 }
 
 void RenderTarget::blitToDefault(int width, int height) const {

@@ -12,10 +12,10 @@ public:
     // samples 0: no multisampling. Throws Error naming the status when incomplete.
     RenderTarget(int width, int height, int samples);
 
-    void bind() const;      // the framebuffer to draw into, with the viewport set
-    void resolve() const;   // multisampled -> single-sample (no-op without MSAA)
+    void bind() const;     // the framebuffer to draw into, with the viewport set
+    void resolve() const;  // multisampled -> single-sample (no-op without MSAA)
     void blitToDefault(int width, int height) const;  // the resolved picture to the window
-    Image readPixels() const;  // the resolved picture, RGB, top row first
+    Image readPixels() const;                         // the resolved picture, RGB, top row first
 
     int width() const { return width_; }
     int height() const { return height_; }

@@ -14,25 +14,16 @@ int liveGlObjects();
 namespace detail {
 void countGlObject(int delta);
 
-struct TextureKind {
-    static GLuint create();
-    static void destroy(GLuint id);
-};
-struct BufferKind {
-    static GLuint create();
-    static void destroy(GLuint id);
-};
-struct VertexArrayKind {
-    static GLuint create();
-    static void destroy(GLuint id);
-};
-struct FramebufferKind {
-    static GLuint create();
-    static void destroy(GLuint id);
-};
-struct RenderbufferKind {
-    static GLuint create();
-    static void destroy(GLuint id);
+// Objects made and deleted in the glGen*(n, ids) / glDelete*(n, ids) style; the template
+// arguments are glad's function pointers.
+template <auto& generate, auto& remove>
+struct NamedKind {
+    static GLuint create() {
+        GLuint id = 0;
+        generate(1, &id);
+        return id;
+    }
+    static void destroy(GLuint id) { remove(1, &id); }
 };
 struct ProgramKind {
     static GLuint create();
@@ -70,11 +61,11 @@ private:
     GLuint id_ = 0;
 };
 
-using GlTexture = GlObject<detail::TextureKind>;
-using GlBuffer = GlObject<detail::BufferKind>;
-using GlVertexArray = GlObject<detail::VertexArrayKind>;
-using GlFramebuffer = GlObject<detail::FramebufferKind>;
-using GlRenderbuffer = GlObject<detail::RenderbufferKind>;
+using GlTexture = GlObject<detail::NamedKind<glGenTextures, glDeleteTextures>>;
+using GlBuffer = GlObject<detail::NamedKind<glGenBuffers, glDeleteBuffers>>;
+using GlVertexArray = GlObject<detail::NamedKind<glGenVertexArrays, glDeleteVertexArrays>>;
+using GlFramebuffer = GlObject<detail::NamedKind<glGenFramebuffers, glDeleteFramebuffers>>;
+using GlRenderbuffer = GlObject<detail::NamedKind<glGenRenderbuffers, glDeleteRenderbuffers>>;
 using GlProgram = GlObject<detail::ProgramKind>;
 
 // "GL_INVALID_OPERATION" for 0x0502, and so on.

@@ -34,13 +34,15 @@ Image readImage(const fs::path& path, int wantChannels) {
     image.width = width;
     image.height = height;
     image.channels = wantChannels ? wantChannels : channels;
-    image.pixels.assign(data.get(), data.get() + size_t(width) * size_t(height) * size_t(image.channels));
+    image.pixels.assign(data.get(),
+                        data.get() + size_t(width) * size_t(height) * size_t(image.channels));
     return image;
 }
 
 void writePng(const fs::path& path, const Image& image) {
     if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 ||
-        image.pixels.size() != size_t(image.width) * size_t(image.height) * size_t(image.channels)) {
+        image.pixels.size() !=
+            size_t(image.width) * size_t(image.height) * size_t(image.channels)) {
         throw Error(displayPath(path) + ": cannot write an empty or malformed image");
     }
     std::error_code ec;
@@ -54,14 +56,17 @@ Image flipRows(const Image& image) {
     Image flipped = image;
     const size_t rowBytes = size_t(image.width) * size_t(image.channels);
     for (int y = 0; y < image.height; ++y) {
-        std::copy_n(image.pixels.begin() + std::ptrdiff_t(size_t(y) * rowBytes), rowBytes,
-                    flipped.pixels.begin() + std::ptrdiff_t(size_t(image.height - 1 - y) * rowBytes));
+        std::copy_n(
+            image.pixels.begin() + std::ptrdiff_t(size_t(y) * rowBytes), rowBytes,
+            flipped.pixels.begin() + std::ptrdiff_t(size_t(image.height - 1 - y) * rowBytes));
     }
     return flipped;
 }
 
 namespace {
-int colourChannels(const Image& image) { return image.channels >= 3 ? 3 : 1; }
+int colourChannels(const Image& image) {
+    return image.channels >= 3 ? 3 : 1;
+}
 
 void requireSameShape(const Image& a, const Image& b) {
     if (a.width != b.width || a.height != b.height) {
@@ -110,7 +115,8 @@ Image differenceImage(const Image& actual, const Image& expected, int gain) {
         for (int x = 0; x < actual.width; ++x) {
             for (int c = 0; c < 3; ++c) {
                 const int source = channels == 3 ? c : 0;
-                const int d = std::abs(int(actual.at(x, y, source)) - int(expected.at(x, y, source)));
+                const int d =
+                    std::abs(int(actual.at(x, y, source)) - int(expected.at(x, y, source)));
                 out.pixels[(size_t(y) * size_t(out.width) + size_t(x)) * 3 + size_t(c)] =
                     std::uint8_t(std::min(255, d * gain));
             }

@@ -28,11 +28,11 @@ Image flipRows(const Image& image);
 
 // How far `actual` is from `expected` (same size; colour channels only, alpha ignored).
 struct ImageDiff {
-    int maxChannelDiff = 0;       // largest |a - b| of any channel, 0..255
+    int maxChannelDiff = 0;          // largest |a - b| of any channel, 0..255
     size_t pixelsOverThreshold = 0;  // pixels with any channel differing by more than `threshold`
     double fractionOverThreshold = 0.0;
-    double psnr = 0.0;            // dB over RGB; +infinity when identical
-    double meanAbsDiff = 0.0;     // per channel, 0..255
+    double psnr = 0.0;         // dB over RGB; +infinity when identical
+    double meanAbsDiff = 0.0;  // per channel, 0..255
 };
 ImageDiff compareImages(const Image& actual, const Image& expected, int threshold);
 

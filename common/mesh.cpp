@@ -100,7 +100,8 @@ MeshData cube() {
             mesh.uvs.push_back(uv);
             mesh.tangents.push_back(glm::vec4(face.tangent, 1.0f));
         }
-        mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        mesh.indices.insert(mesh.indices.end(),
+                            {base, base + 1, base + 2, base, base + 2, base + 3});
     }
     return mesh;
 }

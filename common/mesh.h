@@ -33,7 +33,8 @@ MeshData uvSphere(int xSegments = 64, int ySegments = 64);
 MeshData uvSphereTriangles(int xSegments = 64, int ySegments = 64);
 // Axis-aligned cube from -1 to 1, 24 vertices (flat normals), counter-clockwise outside.
 MeshData cube();
-// A quad in the XY plane from -1 to 1 facing +Z, uv (0,0) at the bottom left: for full-screen passes.
+// A quad in the XY plane from -1 to 1 facing +Z, uv (0,0) at the bottom left: for full-screen
+// passes.
 MeshData quad();
 
 // Vertex attribute locations every shader of the suite uses.

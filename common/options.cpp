@@ -21,7 +21,8 @@ constexpr CommonFlag kCommonFlags[] = {
     {"--headless", nullptr, "render offscreen (no window) and write the last frame to --output"},
     {"--output", "FILE.png", "where the headless frame goes (default: <sample>.png)"},
     {"--size", "WxH", "framebuffer size in pixels (default 1280x720)"},
-    {"--frames", "N", "frames to render, then exit (default: 1 headless; with --benchmark: frames\n"
+    {"--frames", "N",
+     "frames to render, then exit (default: 1 headless; with --benchmark: frames\n"
      "                            measured, default 30, after one warm-up frame)"},
     {"--time", "T", "fixed scene time in seconds (headless default 0)"},
     {"--msaa", "N", "samples per pixel: 0/1 (off), 2, 4, 8 (default 4)"},
@@ -30,7 +31,9 @@ constexpr CommonFlag kCommonFlags[] = {
 };
 
 // Every bad value names its flag; the usage text is attached where the App knows the program.
-[[noreturn]] void fail(const std::string& message) { throw UsageError(message, ""); }
+[[noreturn]] void fail(const std::string& message) {
+    throw UsageError(message, "");
+}
 
 template <class T>
 bool parseNumber(const std::string& text, T& out) {
@@ -150,10 +153,13 @@ Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec
 std::string usageText(const std::string& program, std::span<const FlagSpec> sampleFlags) {
     std::ostringstream out;
     out << "usage: " << program << " [flags]\n";
-    auto line = [&](const std::string& name, const std::string& valueName, const std::string& help) {
+    auto line = [&](const std::string& name, const std::string& valueName,
+                    const std::string& help) {
         std::string left = "  " + name + (valueName.empty() ? "" : " " + valueName);
-        if (left.size() < 28) left.resize(28, ' ');
-        else left += ' ';
+        if (left.size() < 28)
+            left.resize(28, ' ');
+        else
+            left += ' ';
         out << left << help << "\n";
     };
     for (const CommonFlag& flag : kCommonFlags) {

@@ -26,11 +26,11 @@ struct Options {
     bool help = false;
     bool headless = false;
     bool benchmark = false;
-    std::string output;           // empty: "<sample>.png" in the working directory
+    std::string output;  // empty: "<sample>.png" in the working directory
     int width = 1280, height = 720;
-    std::optional<int> frames;    // unset: 1 headless, until closed in a window, 30 for --benchmark
-    std::optional<double> time;   // fixed scene time; headless default 0
-    int msaa = 4;                 // samples per pixel; 0 or 1 turns multisampling off
+    std::optional<int> frames;   // unset: 1 headless, until closed in a window, 30 for --benchmark
+    std::optional<double> time;  // fixed scene time; headless default 0
+    int msaa = 4;                // samples per pixel; 0 or 1 turns multisampling off
     std::optional<CameraStart> camera;
     std::map<std::string, std::string> sampleFlags;  // "--lights" -> "3"; switches -> ""
 

@@ -19,8 +19,12 @@ fs::path fromEnvOr(const char* variable, const char* fallback) {
 }
 }  // namespace
 
-fs::path shaderDir() { return fromEnvOr("PBR_SHADER_DIR", PBR_SHADER_DIR); }
-fs::path resourceDir() { return fromEnvOr("PBR_RESOURCE_DIR", PBR_RESOURCE_DIR); }
+fs::path shaderDir() {
+    return fromEnvOr("PBR_SHADER_DIR", PBR_SHADER_DIR);
+}
+fs::path resourceDir() {
+    return fromEnvOr("PBR_RESOURCE_DIR", PBR_RESOURCE_DIR);
+}
 
 std::string displayPath(const fs::path& path) {
     std::error_code ec;

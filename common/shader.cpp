@@ -35,7 +35,8 @@ struct Preprocessor {
         fs::path canonical = fs::weakly_canonical(file, ec);
         if (ec) canonical = file;
         for (const fs::path& open : stack) {
-            if (open == canonical) throw Error(where + "#include cycle through " + displayPath(file));
+            if (open == canonical)
+                throw Error(where + "#include cycle through " + displayPath(file));
         }
         if (!included.insert(canonical).second) return;
 
@@ -72,8 +73,10 @@ struct Preprocessor {
             fs::path target = file.parent_path() / name[1].str();
             if (!fs::exists(target, ec)) target = includeDir / name[1].str();
             if (!fs::exists(target, ec)) {
-                throw Error(here + "#include \"" + name[1].str() + "\": not found beside the file "
-                                   "or in " + displayPath(includeDir));
+                throw Error(here + "#include \"" + name[1].str() +
+                            "\": not found beside the file "
+                            "or in " +
+                            displayPath(includeDir));
             }
             expand(target, here);
             // Back in this file: the next line is number + 1.
@@ -190,7 +193,9 @@ std::string Shader::name() const {
     return displayPath(vertexPath_) + " + " + displayPath(fragmentPath_);
 }
 
-void Shader::use() const { glUseProgram(program_.id()); }
+void Shader::use() const {
+    glUseProgram(program_.id());
+}
 
 bool Shader::reload() {
     try {
@@ -223,13 +228,20 @@ void Shader::apply(GLint where, const Value& value) {
     std::visit(
         [where](const auto& v) {
             using T = std::decay_t<decltype(v)>;
-            if constexpr (std::is_same_v<T, int>) glUniform1i(where, v);
-            else if constexpr (std::is_same_v<T, float>) glUniform1f(where, v);
-            else if constexpr (std::is_same_v<T, glm::vec2>) glUniform2fv(where, 1, glm::value_ptr(v));
-            else if constexpr (std::is_same_v<T, glm::vec3>) glUniform3fv(where, 1, glm::value_ptr(v));
-            else if constexpr (std::is_same_v<T, glm::vec4>) glUniform4fv(where, 1, glm::value_ptr(v));
-            else if constexpr (std::is_same_v<T, glm::mat3>) glUniformMatrix3fv(where, 1, GL_FALSE, glm::value_ptr(v));
-            else glUniformMatrix4fv(where, 1, GL_FALSE, glm::value_ptr(v));
+            if constexpr (std::is_same_v<T, int>)
+                glUniform1i(where, v);
+            else if constexpr (std::is_same_v<T, float>)
+                glUniform1f(where, v);
+            else if constexpr (std::is_same_v<T, glm::vec2>)
+                glUniform2fv(where, 1, glm::value_ptr(v));
+            else if constexpr (std::is_same_v<T, glm::vec3>)
+                glUniform3fv(where, 1, glm::value_ptr(v));
+            else if constexpr (std::is_same_v<T, glm::vec4>)
+                glUniform4fv(where, 1, glm::value_ptr(v));
+            else if constexpr (std::is_same_v<T, glm::mat3>)
+                glUniformMatrix3fv(where, 1, GL_FALSE, glm::value_ptr(v));
+            else
+                glUniformMatrix4fv(where, 1, GL_FALSE, glm::value_ptr(v));
         },
         value);
 }
@@ -242,12 +254,26 @@ void Shader::store(const std::string& name, const Value& value) {
     values_[name] = value;
 }
 
-void Shader::set(const std::string& name, int value) { store(name, value); }
-void Shader::set(const std::string& name, float value) { store(name, value); }
-void Shader::set(const std::string& name, const glm::vec2& value) { store(name, value); }
-void Shader::set(const std::string& name, const glm::vec3& value) { store(name, value); }
-void Shader::set(const std::string& name, const glm::vec4& value) { store(name, value); }
-void Shader::set(const std::string& name, const glm::mat3& value) { store(name, value); }
-void Shader::set(const std::string& name, const glm::mat4& value) { store(name, value); }
+void Shader::set(const std::string& name, int value) {
+    store(name, value);
+}
+void Shader::set(const std::string& name, float value) {
+    store(name, value);
+}
+void Shader::set(const std::string& name, const glm::vec2& value) {
+    store(name, value);
+}
+void Shader::set(const std::string& name, const glm::vec3& value) {
+    store(name, value);
+}
+void Shader::set(const std::string& name, const glm::vec4& value) {
+    store(name, value);
+}
+void Shader::set(const std::string& name, const glm::mat3& value) {
+    store(name, value);
+}
+void Shader::set(const std::string& name, const glm::mat4& value) {
+    store(name, value);
+}
 
 }  // namespace pbr

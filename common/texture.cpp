@@ -7,10 +7,13 @@ namespace pbr {
 Texture2D::Texture2D(const Image& image, ColorSpace colorSpace)
     : width_(image.width), height_(image.height) {
     static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
-    if (image.channels < 1 || image.channels > 4) throw Error("Texture2D: unsupported channel count");
+    if (image.channels < 1 || image.channels > 4)
+        throw Error("Texture2D: unsupported channel count");
     const GLenum format = kFormats[image.channels - 1];
-    GLenum internalFormat = format == GL_RED ? GL_R8 : format == GL_RG ? GL_RG8
-                          : format == GL_RGB ? GL_RGB8 : GL_RGBA8;
+    GLenum internalFormat = format == GL_RED   ? GL_R8
+                            : format == GL_RG  ? GL_RG8
+                            : format == GL_RGB ? GL_RGB8
+                                               : GL_RGBA8;
     if (colorSpace == ColorSpace::Srgb) {
         if (image.channels < 3) throw Error("Texture2D: sRGB needs an RGB or RGBA image");
         internalFormat = image.channels == 3 ? GL_SRGB8 : GL_SRGB8_ALPHA8;

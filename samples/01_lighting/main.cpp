@@ -11,16 +11,19 @@
 #include "mesh.h"
 
 int main(int argc, char** argv) try {
-    pbr::App app(argc, argv,
-                 {.name = "01_lighting",
-                  .title = "01 lighting: Cook-Torrance, 4 point lights",
-                  .cameraPosition = {0.0f, 0.0f, 23.0f},  // the whole grid; the text starts at (0,0,3)
-                  .flags = {{"--lights", "N", "use the first N of the 4 point lights (default 4)"},
-                            {"--roughness-offset", "D", "add D to every sphere's roughness (default 0)"}}});
-    const int lightCount = app.flag("--lights") ? pbr::parseIntFlag("--lights", *app.flag("--lights"), 0, 4) : 4;
-    const float roughnessOffset = app.flag("--roughness-offset")
-                                      ? pbr::parseFloatFlag("--roughness-offset", *app.flag("--roughness-offset"))
-                                      : 0.0f;
+    pbr::App app(
+        argc, argv,
+        {.name = "01_lighting",
+         .title = "01 lighting: Cook-Torrance, 4 point lights",
+         .cameraPosition = {0.0f, 0.0f, 23.0f},  // the whole grid; the text starts at (0,0,3)
+         .flags = {{"--lights", "N", "use the first N of the 4 point lights (default 4)"},
+                   {"--roughness-offset", "D", "add D to every sphere's roughness (default 0)"}}});
+    const int lightCount =
+        app.flag("--lights") ? pbr::parseIntFlag("--lights", *app.flag("--lights"), 0, 4) : 4;
+    const float roughnessOffset =
+        app.flag("--roughness-offset")
+            ? pbr::parseFloatFlag("--roughness-offset", *app.flag("--roughness-offset"))
+            : 0.0f;
 
     pbr::Shader& shader = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));

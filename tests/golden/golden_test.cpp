@@ -72,7 +72,8 @@ TEST(Golden, GateRejectsSmallChanges) {
     EXPECT_FALSE(roughVerdict.pass) << "roughness + 0.05 passed the gate: " << roughVerdict.summary;
     std::printf("roughness + 0.05: %s\n", roughVerdict.summary.c_str());
 
-    const SampleRender threeLights = renderSample("01_lighting", dir / "three.png", {"--lights", "3"});
+    const SampleRender threeLights =
+        renderSample("01_lighting", dir / "three.png", {"--lights", "3"});
     expectCleanRun(threeLights);
     const GoldenVerdict lightVerdict = judge(readImage(threeLights.image, 3), golden, gate);
     EXPECT_FALSE(lightVerdict.pass) << "a missing light passed the gate: " << lightVerdict.summary;
@@ -95,8 +96,10 @@ TEST(Golden, HeadlessOutputIsBitIdentical) {
 // single-sample render jumps between neighbouring pixels).
 TEST(Golden, MsaaSmoothsEdgesOnly) {
     const fs::path dir = testOutputDir("golden_msaa");
-    const SampleRender off = renderSample("01_lighting", dir / "off.png", {"--size", "640x360", "--msaa", "0"});
-    const SampleRender on = renderSample("01_lighting", dir / "on.png", {"--size", "640x360", "--msaa", "4"});
+    const SampleRender off =
+        renderSample("01_lighting", dir / "off.png", {"--size", "640x360", "--msaa", "0"});
+    const SampleRender on =
+        renderSample("01_lighting", dir / "on.png", {"--size", "640x360", "--msaa", "4"});
     expectCleanRun(off);
     expectCleanRun(on);
     const Image a = readImage(off.image, 3), b = readImage(on.image, 3);
@@ -104,19 +107,22 @@ TEST(Golden, MsaaSmoothsEdgesOnly) {
     for (int y = 1; y + 1 < a.height; ++y) {
         for (int x = 1; x + 1 < a.width; ++x) {
             int diff = 0;
-            for (int c = 0; c < 3; ++c) diff = std::max(diff, std::abs(int(a.at(x, y, c)) - int(b.at(x, y, c))));
+            for (int c = 0; c < 3; ++c)
+                diff = std::max(diff, std::abs(int(a.at(x, y, c)) - int(b.at(x, y, c))));
             if (diff <= 2) continue;
             ++changed;
             int spread = 0;  // the largest step to a neighbour in the single-sample picture
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx)
                     for (int c = 0; c < 3; ++c)
-                        spread = std::max(spread, std::abs(int(a.at(x + dx, y + dy, c)) - int(a.at(x, y, c))));
+                        spread = std::max(
+                            spread, std::abs(int(a.at(x + dx, y + dy, c)) - int(a.at(x, y, c))));
             if (spread < 6) ++changedAwayFromEdges;
         }
     }
     EXPECT_GT(changed, 500u) << "4x MSAA changed almost nothing";
-    EXPECT_LT(double(changed) / (double(a.width) * a.height), 0.05) << "MSAA changed more than edges";
+    EXPECT_LT(double(changed) / (double(a.width) * a.height), 0.05)
+        << "MSAA changed more than edges";
     EXPECT_LT(double(changedAwayFromEdges), 0.02 * double(changed)) << "MSAA changed flat areas";
 }
 

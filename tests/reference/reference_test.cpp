@@ -27,7 +27,9 @@ const std::array<cpu::PointLight, 4> kLights = {{
     {{10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
 }};
 
-glm::dvec3 sphereCentre(int row, int col) { return {(col - 3) * 2.5, (row - 3) * 2.5, 0.0}; }
+glm::dvec3 sphereCentre(int row, int col) {
+    return {(col - 3) * 2.5, (row - 3) * 2.5, 0.0};
+}
 
 // Ray through a point of the image (x right, y down, in pixels; +0.5 is a pixel centre).
 glm::dvec3 rayDirection(double x, double y) {
@@ -54,13 +56,15 @@ std::optional<glm::dvec3> predict(double x, double y, int row, int col, double* 
     surface.metallic = float(row) / 7.0f;
     surface.roughness = std::clamp(float(col) / 7.0f, 0.05f, 1.0f);
     surface.ao = 1.0f;
-    const glm::vec3 color = cpu::reinhardGamma(cpu::shadePointLights(surface, glm::vec3(kCamera), kLights));
+    const glm::vec3 color =
+        cpu::reinhardGamma(cpu::shadePointLights(surface, glm::vec3(kCamera), kLights));
     return glm::dvec3(color) * 255.0;
 }
 
 TEST(Reference, EverySphereMatchesTheCpuBrdf) {
     const fs::path dir = testOutputDir("reference_01");
-    const SampleRender render = renderSample("01_lighting", dir / "01_lighting_nomsaa.png", {"--msaa", "0"});
+    const SampleRender render =
+        renderSample("01_lighting", dir / "01_lighting_nomsaa.png", {"--msaa", "0"});
     ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
     const Image image = readImage(render.image, 3);
     ASSERT_EQ(image.width, kWidth);
@@ -86,7 +90,8 @@ TEST(Reference, EverySphereMatchesTheCpuBrdf) {
                     // away it must change by less than one level (not on a pin-point highlight,
                     // where the tessellated sphere's normal cannot match the analytic one).
                     bool smooth = true;
-                    for (auto [ox, oy] : {std::pair{0.25, 0.0}, {-0.25, 0.0}, {0.0, 0.25}, {0.0, -0.25}}) {
+                    for (auto [ox, oy] :
+                         {std::pair{0.25, 0.0}, {-0.25, 0.0}, {0.0, 0.25}, {0.0, -0.25}}) {
                         const auto near = predict(px + 0.5 + ox, py + 0.5 + oy, row, col);
                         if (!near || glm::length(*near - *expected) > 1.0) smooth = false;
                     }
@@ -98,19 +103,23 @@ TEST(Reference, EverySphereMatchesTheCpuBrdf) {
                         const double rendered = image.at(px, py, ch);
                         const double diff = std::abs(rendered - std::round((*expected)[ch]));
                         worst = std::max(worst, diff);
-                        EXPECT_LE(diff, 2.0) << "sphere row " << row << " col " << col << " pixel ("
-                                             << px << ", " << py << ") channel " << ch
-                                             << ": rendered " << rendered << ", CPU " << (*expected)[ch];
+                        EXPECT_LE(diff, 2.0)
+                            << "sphere row " << row << " col " << col << " pixel (" << px << ", "
+                            << py << ") channel " << ch << ": rendered " << rendered << ", CPU "
+                            << (*expected)[ch];
                     }
                     ++checkedHere;
                 }
             }
-            EXPECT_GE(checkedHere, 1) << "no comparable pixel on sphere row " << row << " col " << col;
+            EXPECT_GE(checkedHere, 1)
+                << "no comparable pixel on sphere row " << row << " col " << col;
             checked += checkedHere;
         }
     }
-    std::printf("compared %d pixels on 49 spheres (skipped %d on steep highlights); worst channel diff %.0f/255\n",
-                checked, skippedSteep, worst);
+    std::printf(
+        "compared %d pixels on 49 spheres (skipped %d on steep highlights); worst channel diff "
+        "%.0f/255\n",
+        checked, skippedSteep, worst);
     EXPECT_GE(checked, 49 * 20);
 }
 

@@ -81,9 +81,9 @@ void writeMetadata(const fs::path& path, const std::string& name, const Image& i
                << "no golden image (" << e.what() << "); create it with PBR_UPDATE_GOLDENS=1";
     }
     if (actual.width != expected.width || actual.height != expected.height) {
-        return ::testing::AssertionFailure() << name << ": size " << actual.width << "x"
-                                             << actual.height << " but the golden is "
-                                             << expected.width << "x" << expected.height;
+        return ::testing::AssertionFailure()
+               << name << ": size " << actual.width << "x" << actual.height << " but the golden is "
+               << expected.width << "x" << expected.height;
     }
     const GoldenVerdict verdict = judge(actual, expected, gate);
     if (verdict.pass) return ::testing::AssertionSuccess() << name << ": " << verdict.summary;
@@ -98,10 +98,10 @@ void writeMetadata(const fs::path& path, const std::string& name, const Image& i
     }
     fs::copy_file(goldenPath, keptExpected, fs::copy_options::overwrite_existing);
     writePng(diffPath, differenceImage(actual, expected, 16));
-    return ::testing::AssertionFailure()
-           << name << " differs from its golden: " << verdict.summary << "\n  actual:     "
-           << keptActual.string() << "\n  expected:   " << keptExpected.string()
-           << "\n  difference: " << diffPath.string() << " (x16)";
+    return ::testing::AssertionFailure() << name << " differs from its golden: " << verdict.summary
+                                         << "\n  actual:     " << keptActual.string()
+                                         << "\n  expected:   " << keptExpected.string()
+                                         << "\n  difference: " << diffPath.string() << " (x16)";
 }
 
 }  // namespace pbr::test

@@ -43,7 +43,8 @@ SampleRender renderSample(const std::string& sample, const std::filesystem::path
 
 // Compares `actual` with tests/golden/<name>.png. With PBR_UPDATE_GOLDENS=1 it replaces the
 // golden (and its .json metadata) instead and passes.
-::testing::AssertionResult matchesGolden(const std::string& name, const std::filesystem::path& actual,
+::testing::AssertionResult matchesGolden(const std::string& name,
+                                         const std::filesystem::path& actual,
                                          const std::string& renderer, const GoldenGate& gate = {});
 
 }  // namespace pbr::test

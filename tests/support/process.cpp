@@ -21,7 +21,9 @@ std::vector<std::string> RunResult::errLines() const {
     return lines;
 }
 
-fs::path sampleExecutable(const std::string& name) { return fs::path(PBR_SAMPLE_BIN_DIR) / name; }
+fs::path sampleExecutable(const std::string& name) {
+    return fs::path(PBR_SAMPLE_BIN_DIR) / name;
+}
 
 fs::path testOutputDir(const std::string& name) {
     const fs::path dir = fs::path(PBR_TEST_OUTPUT_DIR) / name;
@@ -58,7 +60,8 @@ RunResult runSample(std::vector<std::string> argv, const RunOptions& options) {
         if (devNull >= 0) dup2(devNull, 0);
         for (const auto& [name, value] : options.setEnv) setenv(name.c_str(), value.c_str(), 1);
         for (const std::string& name : options.unsetEnv) unsetenv(name.c_str());
-        if (!options.workingDirectory.empty() && chdir(options.workingDirectory.c_str()) != 0) _exit(126);
+        if (!options.workingDirectory.empty() && chdir(options.workingDirectory.c_str()) != 0)
+            _exit(126);
         std::vector<char*> args;
         for (std::string& arg : argv) args.push_back(arg.data());
         args.push_back(nullptr);

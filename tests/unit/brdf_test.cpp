@@ -60,7 +60,7 @@ TEST(Brdf, HeadOnLightOnAMatteSurface) {
     s.albedo = {1, 1, 1};
     s.metallic = 0.0f;
     s.roughness = 1.0f;
-    s.ao = 0.0f;  // no ambient
+    s.ao = 0.0f;                                   // no ambient
     const PointLight light{{0, 0, 2}, {4, 4, 4}};  // radiance 4 / 2^2 = 1
     const glm::vec3 Lo = shadePointLights(s, {0, 0, 5}, std::span(&light, 1));
     const float F = 0.04f;  // head-on Fresnel of a dielectric

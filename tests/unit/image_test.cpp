@@ -22,7 +22,8 @@ Image solid(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t 
 }
 
 fs::path tempDir() {
-    const fs::path dir = fs::temp_directory_path() / ("pbr-image-test-" + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("pbr-image-test-" + std::to_string(::getpid()));
     fs::create_directories(dir);
     return dir;
 }
@@ -69,8 +70,8 @@ TEST(Image, MetricsOfOneChangedPixel) {
 TEST(Image, DifferenceImageAmplifies) {
     const Image a = solid(2, 1, 50, 50, 50);
     Image b = a;
-    b.pixels[0] = 53;    // +3 red on the first pixel
-    b.pixels[5] = 0;     // -50 blue on the second
+    b.pixels[0] = 53;  // +3 red on the first pixel
+    b.pixels[5] = 0;   // -50 blue on the second
     const Image diff = differenceImage(b, a, 16);
     EXPECT_EQ(diff.at(0, 0, 0), 48);
     EXPECT_EQ(diff.at(0, 0, 1), 0);

@@ -6,9 +6,12 @@
 namespace pbr {
 namespace {
 
-const std::vector<FlagSpec> kSampleFlags = {{"--lights", "N", "lights"}, {"--textured", "", "switch"}};
+const std::vector<FlagSpec> kSampleFlags = {{"--lights", "N", "lights"},
+                                            {"--textured", "", "switch"}};
 
-Options parse(std::vector<std::string> args) { return parseOptions(args, kSampleFlags); }
+Options parse(std::vector<std::string> args) {
+    return parseOptions(args, kSampleFlags);
+}
 
 std::string errorOf(std::vector<std::string> args) {
     try {
@@ -33,8 +36,8 @@ TEST(Options, Defaults) {
 }
 
 TEST(Options, EveryCommonFlag) {
-    const Options o = parse({"--headless", "--output", "a.png", "--size", "640x360", "--frames", "3",
-                             "--time=1.5", "--msaa", "8", "--camera", "0,0,3", "--benchmark"});
+    const Options o = parse({"--headless", "--output", "a.png", "--size", "640x360", "--frames",
+                             "3", "--time=1.5", "--msaa", "8", "--camera", "0,0,3", "--benchmark"});
     EXPECT_TRUE(o.headless);
     EXPECT_TRUE(o.benchmark);
     EXPECT_EQ(o.output, "a.png");

@@ -50,13 +50,13 @@ TEST_F(ShaderSourceTest, ExpandsIncludesOnceAndNumbersTheLines) {
     EXPECT_EQ(source.files[3].filename(), "local.glsl");
     const std::string expected =
         "#version 330 core\n"
-        "#line 10001\n"             // brdf.glsl line 1
-        "#line 20001\n"             // common.glsl line 1
+        "#line 10001\n"  // brdf.glsl line 1
+        "#line 20001\n"  // common.glsl line 1
         "const float PI = 3.14;\n"
-        "#line 10002\n"             // back in brdf.glsl at line 2
+        "#line 10002\n"  // back in brdf.glsl at line 2
         "float D() { return PI; }\n"
-        "#line 3\n"                 // back in main.frag at line 3
-        "#line 4\n"                 // common.glsl again: nothing, main.frag line 4
+        "#line 3\n"  // back in main.frag at line 3
+        "#line 4\n"  // common.glsl again: nothing, main.frag line 4
         "#line 30001\n"
         "float local() { return 1.0; }\n"
         "#line 5\n"
@@ -81,8 +81,9 @@ TEST_F(ShaderSourceTest, IncludeCycleIsRefused) {
 
 TEST_F(ShaderSourceTest, UnquotedIncludeIsRefused) {
     write("sample/main.frag", "#version 330 core\n#include <brdf.glsl>\n");
-    EXPECT_NE(messageOf("sample/main.frag").find("main.frag:2: #include needs a \"quoted\" file name"),
-              std::string::npos);
+    EXPECT_NE(
+        messageOf("sample/main.frag").find("main.frag:2: #include needs a \"quoted\" file name"),
+        std::string::npos);
 }
 
 TEST_F(ShaderSourceTest, MissingFileIsNamed) {
@@ -91,9 +92,10 @@ TEST_F(ShaderSourceTest, MissingFileIsNamed) {
 
 TEST(ShaderLog, MesaAndNvidiaMessagesMapToFileAndLine) {
     const std::vector<fs::path> files = {"/s/main.frag", "/s/include/brdf.glsl"};
-    const auto mesa = mapShaderLog("0:12(5): error: `roughnes' undeclared\n"
-                                   "0:10007(3): error: syntax error\n",
-                                   files);
+    const auto mesa = mapShaderLog(
+        "0:12(5): error: `roughnes' undeclared\n"
+        "0:10007(3): error: syntax error\n",
+        files);
     ASSERT_EQ(mesa.size(), 2u);
     EXPECT_EQ(mesa[0], "/s/main.frag:12: error: `roughnes' undeclared");
     EXPECT_EQ(mesa[1], "/s/include/brdf.glsl:7: error: syntax error");

@@ -1,0 +1,111 @@
+// The helper library inside a real (offscreen) GL context: the error detector, object ownership,
+// shader reload, the render target. Each test makes its own headless App.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "app.h"
+#include "error.h"
+#include "mesh.h"
+#include "paths.h"
+#include "support/process.h"
+#include "texture.h"
+
+namespace pbr {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A headless App as a sample would make it, drawing into `dir`.
+App makeApp(const fs::path& dir, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = {"gl_test", "--headless", "--size",
+                                     "64x36",   "--output",   (dir / "out.png").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    std::vector<char*> argv;
+    for (std::string& arg : args) argv.push_back(arg.data());
+    return App(int(argv.size()), argv.data(), {.name = "gl_test"});
+}
+
+TEST(Gl, AGlErrorFailsTheRunAndIsNamed) {
+    const fs::path dir = test::testOutputDir("gl_error");
+    App app = makeApp(dir);
+    ASSERT_TRUE(app.nextFrame());
+    glEnable(0x1234);  // not a capability: GL_INVALID_ENUM
+    try {
+        app.nextFrame();
+        FAIL() << "a GL error went unnoticed";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("1 OpenGL error(s) during the run"), std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(Gl, ACleanRunHasNoErrorAndReleasesEveryObject) {
+    const fs::path dir = test::testOutputDir("gl_clean");
+    const int before = liveGlObjects();
+    {
+        App app = makeApp(dir);
+        const GpuMesh sphere(uvSphere());
+        const Texture2D texture(Image{2, 2, 3, std::vector<std::uint8_t>(12, 128)},
+                                ColorSpace::Srgb);
+        EXPECT_GT(liveGlObjects(), before + 3);  // vao, 2 buffers, texture, render target
+        while (app.nextFrame()) {
+            glClearColor(0.25f, 0.5f, 1.0f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT);
+        }
+    }
+    EXPECT_EQ(liveGlObjects(), before);
+    // The clear colour reached the file: 0.25 * 255 = 63.75 -> 64, 0.5 -> 128, 1 -> 255.
+    const Image image = readImage(dir / "out.png", 3);
+    EXPECT_EQ(image.at(10, 10, 0), 64);
+    EXPECT_EQ(image.at(10, 10, 1), 128);
+    EXPECT_EQ(image.at(10, 10, 2), 255);
+}
+
+TEST(Gl, ReloadKeepsTheUniformValuesAlreadySet) {
+    const fs::path dir = test::testOutputDir("gl_reload");
+    App app = makeApp(dir);
+    Shader& shader = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
+    shader.set("roughness", 0.375f);
+    const GLuint before = shader.id();
+    ASSERT_TRUE(shader.reload());
+    EXPECT_NE(shader.id(), before);  // a new program...
+    float value = 0.0f;
+    glGetUniformfv(shader.id(), glGetUniformLocation(shader.id(), "roughness"), &value);
+    EXPECT_FLOAT_EQ(value, 0.375f);  // ...with the old value
+    while (app.nextFrame()) {
+    }
+}
+
+TEST(Gl, ReloadOfABrokenEditKeepsTheOldProgram) {
+    const fs::path dir = test::testOutputDir("gl_reload_broken");
+    fs::copy(PBR_SOURCE_SHADER_DIR, dir / "shaders", fs::copy_options::recursive);
+    setenv("PBR_SHADER_DIR", (dir / "shaders").c_str(), 1);
+    {
+        App app = makeApp(dir);
+        Shader& shader = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
+        const GLuint before = shader.id();
+        std::ofstream(dir / "shaders/01_lighting/pbr.frag", std::ios::app)
+            << "\nthis is not glsl\n";
+        EXPECT_FALSE(shader.reload());
+        EXPECT_EQ(shader.id(), before);
+        while (app.nextFrame()) {
+        }
+    }
+    unsetenv("PBR_SHADER_DIR");
+}
+
+TEST(Gl, MoreSamplesThanTheDriverAllowsIsAClearError) {
+    const fs::path dir = test::testOutputDir("gl_msaa");
+    try {
+        makeApp(dir, {"--msaa", "16"});
+        FAIL() << "16x MSAA accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("--msaa 16: this GL allows at most"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace pbr
