@@ -9,6 +9,7 @@
 //     } catch (...) {
 //         return pbr::reportFailure();
 //     }
+#include <chrono>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -69,6 +70,8 @@ public:
     float deltaTime() const { return deltaTime_; }  // seconds since the last frame
     int frameIndex() const { return frameIndex_; }  // 0 for the first frame
     std::string renderer() const;
+    // Adds to the precompute time --benchmark reports (IBL maps and the like, cache off).
+    void addPrecomputeSeconds(double seconds) { precomputeSeconds_ += seconds; }
 
 private:
     void beginFrame();
@@ -90,8 +93,11 @@ private:
     int frameIndex_ = -1;
     float time_ = 0.0f, deltaTime_ = 0.0f;
     double lastSeconds_ = 0.0;
-    double startSeconds_ = 0.0, firstFrameSeconds_ = 0.0;
+    double startSeconds_ = 0.0;  // context clock when the context was made: scene time 0
+    std::chrono::steady_clock::time_point constructed_ = std::chrono::steady_clock::now();
+    double startupSeconds_ = 0.0;  // App constructed (context creation included) -> first frame
     double frameStart_ = 0.0;
+    double precomputeSeconds_ = 0.0;
     std::vector<double> frameMilliseconds_;
     int screenshotCount_ = 0;
     bool noDisplayFallback_ = false;

@@ -3,6 +3,7 @@
 // The App picks one; samples never see this file.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -30,8 +31,18 @@ public:
     virtual void setVsync(bool) {}
 };
 
-// An offscreen OSMesa context (GL 3.3 core or later). Throws Error when OSMesa cannot make one.
+// An offscreen context from `backend`: "osmesa", "egl", or "" for the first that works, in
+// this order: OSMesa (always software rendering, so its pictures match the goldens on any
+// machine), then EGL (a GPU where a driver offers one; the only way on Mesa 25.1 and later, which
+// dropped OSMesa). Throws Error naming each backend's reason when none works.
+std::unique_ptr<Context> createOffscreenContext(const std::string& backend, int width, int height);
+
+// The offscreen backends this build has, in the automatic order.
+std::vector<std::string> offscreenBackends();
+
+// The single backends (each throws Error with its reason).
 std::unique_ptr<Context> createOsMesaContext(int width, int height);
+std::unique_ptr<Context> createEglContext(int width, int height);
 
 // A GLFW window with a GL 3.3 core context. Returns nullptr, with the reason in `whyNot`, when
 // there is no display to open it on.

@@ -59,7 +59,10 @@ public:
             throw Error("osmesa: cannot load the OpenGL functions (gladLoadGL failed)");
         }
     }
-    ~OsMesaContext() override { OSMesaDestroyContext(context_); }
+    ~OsMesaContext() override {
+        OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+        OSMesaDestroyContext(context_);
+    }
 
     bool windowed() const override { return false; }
     std::string backend() const override { return "osmesa"; }

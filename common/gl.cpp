@@ -2,19 +2,39 @@
 
 namespace pbr {
 
-namespace {
-int liveObjects = 0;
+GlObjectCensus takeGlObjectCensus() {
+    // GL hands out names counting up from 1; no sample comes near this many of one kind.
+    constexpr GLuint kHighestName = 4096;
+    GlObjectCensus census;
+    for (GLuint name = 1; name <= kHighestName; ++name) {
+        census.textures += glIsTexture(name) ? 1 : 0;
+        census.buffers += glIsBuffer(name) ? 1 : 0;
+        census.vertexArrays += glIsVertexArray(name) ? 1 : 0;
+        census.framebuffers += glIsFramebuffer(name) ? 1 : 0;
+        census.renderbuffers += glIsRenderbuffer(name) ? 1 : 0;
+        census.programs += glIsProgram(name) ? 1 : 0;
+        census.shaders += glIsShader(name) ? 1 : 0;
+    }
+    return census;
 }
 
-int liveGlObjects() {
-    return liveObjects;
+std::string GlObjectCensus::describe() const {
+    std::string text;
+    auto add = [&text](int count, const char* noun) {
+        if (count == 0) return;
+        text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+    };
+    add(textures, "texture");
+    add(buffers, "buffer");
+    add(vertexArrays, "vertex array");
+    add(framebuffers, "framebuffer");
+    add(renderbuffers, "renderbuffer");
+    add(programs, "program");
+    add(shaders, "shader");
+    return text;
 }
 
 namespace detail {
-
-void countGlObject(int delta) {
-    liveObjects += delta;
-}
 
 GLuint ProgramKind::create() {
     return glCreateProgram();

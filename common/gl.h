@@ -8,11 +8,20 @@
 
 namespace pbr {
 
-// Counts of live GL objects of the kinds below, so a run can prove it released everything.
-int liveGlObjects();
+// The GL objects alive in the current context, found by asking GL about every name up to a
+// bound (glIsTexture, glIsBuffer, ...): independent of how they were made, so a leak through a
+// raw glGen* call shows too.
+struct GlObjectCensus {
+    int textures = 0, buffers = 0, vertexArrays = 0, framebuffers = 0, renderbuffers = 0,
+        programs = 0, shaders = 0;
+    int total() const {
+        return textures + buffers + vertexArrays + framebuffers + renderbuffers + programs + shaders;
+    }
+    std::string describe() const;  // "2 textures, 1 buffer"; empty when none
+};
+GlObjectCensus takeGlObjectCensus();
 
 namespace detail {
-void countGlObject(int delta);
 
 // Objects made and deleted in the glGen*(n, ids) / glDelete*(n, ids) style; the template
 // arguments are glad's function pointers.
@@ -35,7 +44,7 @@ struct ProgramKind {
 template <class Kind>
 class GlObject {
 public:
-    GlObject() : id_(Kind::create()) { detail::countGlObject(+1); }
+    GlObject() : id_(Kind::create()) {}
     ~GlObject() { reset(); }
     GlObject(GlObject&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
     GlObject& operator=(GlObject&& other) noexcept {
@@ -54,7 +63,6 @@ private:
     void reset() {
         if (id_ != 0) {
             Kind::destroy(id_);
-            detail::countGlObject(-1);
             id_ = 0;
         }
     }

@@ -28,6 +28,7 @@ constexpr CommonFlag kCommonFlags[] = {
     {"--msaa", "N", "samples per pixel: 0/1 (off), 2, 4, 8 (default 4)"},
     {"--camera", "x,y,z[,yaw,pitch]", "camera start position (and yaw/pitch in degrees)"},
     {"--benchmark", nullptr, "time the frames and print one JSON line of statistics"},
+    {"--backend", "osmesa|egl", "offscreen backend (implies --headless; default: the first that works)"},
 };
 
 // Every bad value names its flag; the usage text is attached where the App knows the program.
@@ -133,6 +134,12 @@ Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec
                 fail("--msaa: " + value + " is not 0, 1 or a power of two");
             }
             options.msaa = samples <= 1 ? 0 : samples;
+        } else if (flag == "--backend") {
+            if (value != "osmesa" && value != "egl") {
+                fail("--backend: '" + value + "' is not osmesa or egl");
+            }
+            options.backend = value;
+            options.headless = true;
         } else if (flag == "--camera") {
             std::vector<float> numbers = parseFloatList("--camera", value);
             if (numbers.size() != 3 && numbers.size() != 5) {

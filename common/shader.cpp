@@ -1,8 +1,9 @@
 #include "shader.h"
 
 #include <cstdio>
-#include <regex>
+#include <optional>
 #include <set>
+#include <string_view>
 #include <sstream>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -22,6 +23,44 @@ constexpr int kLinesPerFile = 10000;
 
 std::string lineDirective(int fileId, int line) {
     return "#line " + std::to_string(fileId * kLinesPerFile + line) + "\n";
+}
+
+// A tiny cursor over one line, for the two line formats below (no <regex>: it is slow to build
+// and its GCC 12 headers warn under the sanitizers).
+struct Scanner {
+    std::string_view rest;
+    void skipSpaces() {
+        while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+    }
+    bool eat(std::string_view token) {
+        if (rest.substr(0, token.size()) != token) return false;
+        rest.remove_prefix(token.size());
+        return true;
+    }
+    bool number(long& value) {
+        size_t digits = 0;
+        while (digits < rest.size() && rest[digits] >= '0' && rest[digits] <= '9') ++digits;
+        if (digits == 0 || digits > 9) return false;
+        value = std::stol(std::string(rest.substr(0, digits)));
+        rest.remove_prefix(digits);
+        return true;
+    }
+};
+
+// `#include <argument>` (spaces allowed around '#'): returns the argument, trimmed.
+std::optional<std::string> includeArgument(const std::string& line) {
+    Scanner scan{line};
+    scan.skipSpaces();
+    if (!scan.eat("#")) return std::nullopt;
+    scan.skipSpaces();
+    if (!scan.eat("include")) return std::nullopt;
+    std::string argument(scan.rest);
+    while (!argument.empty() && (argument.back() == ' ' || argument.back() == '\t' ||
+                                 argument.back() == '\r')) {
+        argument.pop_back();
+    }
+    const size_t start = argument.find_first_not_of(" \t");
+    return start == std::string::npos ? std::string() : argument.substr(start);
 }
 
 struct Preprocessor {
@@ -51,31 +90,27 @@ struct Preprocessor {
         stack.push_back(canonical);
         if (id != 0) out.text += lineDirective(id, 1);
 
-        static const std::regex includeLine(R"(^\s*#\s*include\s*(.*?)\s*$)");
-        static const std::regex quoted(R"("([^"]+)\")");
         std::istringstream lines(text);
         std::string line;
         int number = 0;
         while (std::getline(lines, line)) {
             ++number;
-            std::smatch match;
-            if (!std::regex_match(line, match, includeLine)) {
+            const std::optional<std::string> argument = includeArgument(line);
+            if (!argument) {
                 out.text += line;
                 out.text += '\n';
                 continue;
             }
             const std::string here = displayPath(file) + ":" + std::to_string(number) + ": ";
-            std::smatch name;
-            const std::string argument = match[1].str();
-            if (!std::regex_match(argument, name, quoted)) {
+            if (argument->size() < 3 || argument->front() != '"' || argument->back() != '"' ||
+                argument->find('"', 1) != argument->size() - 1) {
                 throw Error(here + "#include needs a \"quoted\" file name");
             }
-            fs::path target = file.parent_path() / name[1].str();
-            if (!fs::exists(target, ec)) target = includeDir / name[1].str();
+            const std::string name = argument->substr(1, argument->size() - 2);
+            fs::path target = file.parent_path() / name;
+            if (!fs::exists(target, ec)) target = includeDir / name;
             if (!fs::exists(target, ec)) {
-                throw Error(here + "#include \"" + name[1].str() +
-                            "\": not found beside the file "
-                            "or in " +
+                throw Error(here + "#include \"" + name + "\": not found beside the file or in " +
                             displayPath(includeDir));
             }
             expand(target, here);
@@ -95,25 +130,36 @@ ShaderSource preprocessShader(const fs::path& file, const fs::path& includeDir) 
 }
 
 std::vector<std::string> mapShaderLog(const std::string& log, const std::vector<fs::path>& files) {
-    // Mesa: "0:12(5): error: message"; NVIDIA: "0(12) : error C0000: message".
-    static const std::regex mesa(R"(^\s*(\d+):(\d+)\(\d+\):\s*(.*)$)");
-    static const std::regex nvidia(R"(^\s*(\d+)\((\d+)\)\s*:\s*(.*)$)");
     std::vector<std::string> mapped;
     std::istringstream lines(log);
     std::string line;
     while (std::getline(lines, line)) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
-        std::smatch match;
-        if (std::regex_match(line, match, mesa) || std::regex_match(line, match, nvidia)) {
-            const long encoded = std::stol(match[2].str());
-            const size_t id = size_t(encoded / kLinesPerFile);
-            const std::string file = id < files.size() ? displayPath(files[id]) : "<unknown file>";
-            mapped.push_back(file + ":" + std::to_string(encoded % kLinesPerFile) + ": " +
-                             match[3].str());
-        } else {
-            mapped.push_back(line);
+        // Mesa: "0:12(5): error: message"; NVIDIA: "0(12) : error C0000: message".
+        Scanner scan{line};
+        scan.skipSpaces();
+        long source = 0, encoded = 0, column = 0;
+        bool parsed = false;
+        if (scan.number(source)) {
+            if (scan.eat(":")) {
+                parsed = scan.number(encoded) && scan.eat("(") && scan.number(column) &&
+                         scan.eat("):");
+            } else if (scan.eat("(")) {
+                parsed = scan.number(encoded) && scan.eat(")");
+                scan.skipSpaces();
+                parsed = parsed && scan.eat(":");
+            }
         }
+        if (!parsed) {
+            mapped.push_back(line);
+            continue;
+        }
+        scan.skipSpaces();
+        const size_t id = size_t(encoded / kLinesPerFile);
+        const std::string file = id < files.size() ? displayPath(files[id]) : "<unknown file>";
+        mapped.push_back(file + ":" + std::to_string(encoded % kLinesPerFile) + ": " +
+                         std::string(scan.rest));
     }
     return mapped;
 }

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "context.h"
 #include "support/golden.h"
 
 namespace pbr::test {
@@ -42,15 +43,45 @@ void expectNotBlank(const Image& image, double minShare) {
     EXPECT_GT(double(differing) / (double(image.width) * image.height), minShare);
 }
 
-TEST(Golden, Lighting01MatchesGolden) {
-    const fs::path dir = testOutputDir("golden_01_lighting");
-    const SampleRender render = renderSample("01_lighting", dir / "01_lighting.png");
-    expectCleanRun(render);
-    const Image image = readImage(render.image, 3);
+// Each golden is checked on every offscreen backend this build has: they must draw the same.
+class GoldenOnBackend : public ::testing::TestWithParam<std::string> {
+protected:
+    SampleRender render(const std::string& sample, std::vector<std::string> args = {}) {
+        const fs::path dir = testOutputDir("golden_" + sample + "_" + GetParam());
+        args.insert(args.end(), {"--backend", GetParam()});
+        return renderSample(sample, dir / (sample + ".png"), args);
+    }
+};
+
+TEST_P(GoldenOnBackend, Lighting01MatchesGolden) {
+    const SampleRender rendered = render("01_lighting");
+    expectCleanRun(rendered);
+    EXPECT_EQ(rendered.backend.rfind(GetParam(), 0), 0u) << rendered.backend;
+    const Image image = readImage(rendered.image, 3);
     EXPECT_EQ(image.width, 1280);
     EXPECT_EQ(image.height, 720);
     expectNotBlank(image, 0.15);  // 49 spheres cover about a quarter of the frame
-    EXPECT_TRUE(matchesGolden("01_lighting", render.image, render.renderer));
+    EXPECT_TRUE(matchesGolden("01_lighting", rendered));
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, GoldenOnBackend, ::testing::ValuesIn(offscreenBackends()),
+                         [](const auto& info) { return info.param; });
+
+// On one machine the backends give the same pixels, bit for bit (both are llvmpipe here).
+TEST(Golden, BackendsGiveTheSamePixels) {
+    const std::vector<std::string> backends = offscreenBackends();
+    if (backends.size() < 2) GTEST_SKIP() << "this build has one offscreen backend";
+    const fs::path dir = testOutputDir("golden_backends");
+    std::string first;
+    for (const std::string& backend : backends) {
+        const SampleRender render = renderSample("01_lighting", dir / (backend + ".png"),
+                                                 {"--size", "640x360", "--backend", backend});
+        expectCleanRun(render);
+        const std::string bytes = bytesOf(render.image);
+        ASSERT_FALSE(bytes.empty());
+        if (first.empty()) first = bytes;
+        else EXPECT_TRUE(bytes == first) << backend << " differs from " << backends[0];
+    }
 }
 
 // The gate must catch a small, real change: roughness + 0.05 on every sphere, or one light of the

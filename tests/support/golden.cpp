@@ -1,10 +1,17 @@
 #include "support/golden.h"
 
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fcntl.h>
 #include <fstream>
-#include <regex>
+#include <set>
 #include <sstream>
+
+#include "paths.h"
 
 namespace pbr::test {
 
@@ -31,17 +38,27 @@ SampleRender renderSample(const std::string& sample, const fs::path& output,
     SampleRender render;
     render.run = runSample(argv);
     render.image = output;
-    static const std::regex wrote(R"(wrote .* \(\d+x\d+, msaa \d+, (.*)\)\s*$)");
+    // "<sample>: wrote <path> (<W>x<H>, msaa <N>, <backend>, <renderer>)"
     std::istringstream lines(render.run.out);
     std::string line;
     while (std::getline(lines, line)) {
-        std::smatch match;
-        if (std::regex_search(line, match, wrote)) render.renderer = match[1].str();
+        const size_t msaa = line.find(", msaa ");
+        if (line.find(": wrote ") == std::string::npos || msaa == std::string::npos) continue;
+        const size_t backendStart = line.find(", ", msaa + 1);
+        const size_t backendEnd = line.find(", ", backendStart + 2);
+        if (backendStart == std::string::npos || backendEnd == std::string::npos) continue;
+        render.backend = line.substr(backendStart + 2, backendEnd - backendStart - 2);
+        render.renderer = line.substr(backendEnd + 2);
+        if (!render.renderer.empty() && render.renderer.back() == ')') render.renderer.pop_back();
     }
     return render;
 }
 
+fs::path goldenReportDir() { return fs::path(PBR_TEST_OUTPUT_DIR) / "golden-report"; }
+fs::path goldenReportPage() { return goldenReportDir() / "index.html"; }
+
 namespace {
+
 bool updating() {
     const char* value = std::getenv("PBR_UPDATE_GOLDENS");
     return value && std::string(value) == "1";
@@ -56,20 +73,147 @@ void writeMetadata(const fs::path& path, const std::string& name, const Image& i
         << ", \"max_fraction_over\": " << gate.maxFractionOver
         << ", \"min_psnr_db\": " << gate.minPsnr << "}\n}\n";
 }
+
+std::string htmlEscape(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '&': out += "&amp;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
+std::string number(double value, int digits) {
+    if (std::isinf(value)) return "&infin;";
+    std::ostringstream out;
+    out.setf(std::ios::fixed);
+    out.precision(digits);
+    out << value;
+    return out.str();
+}
+
+struct ReportEntry {
+    std::string id;  // "01_lighting.osmesa"
+    std::string status;  // "pass", "fail", "updated"
+    std::string sample, backend, renderer, size;
+    GoldenGate gate;
+    ImageDiff diff;
+};
+
+std::string entryHtml(const ReportEntry& e) {
+    const std::string verdict = e.status == "pass" ? "PASS" : e.status == "fail" ? "FAIL" : "UPDATED";
+    // ok: 1 within the limit, 0 over it, -1 informative (no limit)
+    auto row = [](const std::string& metric, const std::string& value, const std::string& limit, int ok) {
+        const std::string verdict = ok < 0 ? "<td></td>" : ok ? "<td class=\"ok\">ok</td>" : "<td class=\"bad\">over</td>";
+        return "<tr><td>" + metric + "</td><td>" + value + "</td><td>" + limit + "</td>" + verdict + "</tr>\n";
+    };
+    std::ostringstream html;
+    html << "<!-- status: " << e.status << " -->\n"
+         << "<section class=\"" << e.status << "\" id=\"" << htmlEscape(e.id) << "\">\n"
+         << "<h2>" << htmlEscape(e.sample) << " <small>" << htmlEscape(e.backend) << "</small> <span class=\"verdict\">"
+         << verdict << "</span></h2>\n"
+         << "<p>" << htmlEscape(e.size) << " &middot; renderer: <code>" << htmlEscape(e.renderer) << "</code></p>\n"
+         << "<table><tr><th>metric</th><th>value</th><th>limit</th><th></th></tr>\n"
+         << row("pixels with a channel off by more than " + std::to_string(e.gate.channelThreshold),
+                std::to_string(e.diff.pixelsOverThreshold) + " (" + number(e.diff.fractionOverThreshold * 100.0, 4) + " %)",
+                "&le; " + number(e.gate.maxFractionOver * 100.0, 4) + " %",
+                e.diff.fractionOverThreshold <= e.gate.maxFractionOver)
+         << row("PSNR", number(e.diff.psnr, 2) + " dB", "&ge; " + number(e.gate.minPsnr, 1) + " dB",
+                e.diff.psnr >= e.gate.minPsnr)
+         << row("largest channel difference", std::to_string(e.diff.maxChannelDiff) + " / 255", "", -1)
+         << row("mean channel difference", number(e.diff.meanAbsDiff, 4) + " / 255", "", -1)
+         << "</table>\n<div class=\"pictures\">\n";
+    for (const char* kind : {"expected", "actual", "diff"}) {
+        const std::string src = "img/" + e.id + "." + kind + ".png";
+        html << "<figure><a href=\"" << htmlEscape(src) << "\"><img src=\"" << htmlEscape(src) << "\" alt=\""
+             << kind << "\"></a><figcaption>"
+             << (std::string(kind) == "diff" ? "difference &times;16" : kind) << "</figcaption></figure>\n";
+    }
+    html << "</div>\n</section>\n";
+    return html.str();
+}
+
+// Rebuilds index.html from every entry written so far. Tests run in parallel processes, so the
+// read-and-write happens under an exclusive lock; the last writer sees every entry.
+void rebuildReport() {
+    const fs::path dir = goldenReportDir();
+    const int lock = ::open((dir / ".lock").c_str(), O_CREAT | O_RDWR, 0644);
+    if (lock >= 0) ::flock(lock, LOCK_EX);
+    std::set<fs::path> entries;
+    for (const auto& file : fs::directory_iterator(dir / "entries")) entries.insert(file.path());
+    int passed = 0, failed = 0, updated = 0;
+    std::string failures, others;  // failures first: they are what a reader opens the page for
+    for (const fs::path& entry : entries) {
+        const std::string html = readTextFile(entry);
+        if (html.rfind("<!-- status: pass", 0) == 0) ++passed;
+        else if (html.rfind("<!-- status: fail", 0) == 0) ++failed;
+        else ++updated;
+        (html.rfind("<!-- status: fail", 0) == 0 ? failures : others) += html;
+    }
+    const std::string body = failures + others;
+    std::ofstream page(dir / "index.html.tmp");
+    page << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+         << "<title>Golden report: " << failed << " failed</title>\n<style>\n"
+         << "body{font:14px/1.4 sans-serif;margin:1.5em;background:#fafafa;color:#222}\n"
+         << "section{background:#fff;border:1px solid #ccc;border-left:8px solid #2a2;margin:1em 0;padding:.5em 1em}\n"
+         << "section.fail{border-left-color:#d22}section.updated{border-left-color:#d90}\n"
+         << ".verdict{font-size:.8em;padding:.1em .5em;border-radius:3px;background:#2a2;color:#fff}\n"
+         << ".fail .verdict{background:#d22}.updated .verdict{background:#d90}\n"
+         << "table{border-collapse:collapse}td,th{border:1px solid #ddd;padding:.2em .6em;text-align:left}\n"
+         << "td.ok{color:#2a2}td.bad{color:#d22;font-weight:bold}\n"
+         << ".pictures{display:flex;gap:.8em;flex-wrap:wrap}figure{margin:.5em 0}\n"
+         << "img{width:420px;border:1px solid #999;image-rendering:pixelated;background:#000}\n"
+         << "</style></head><body>\n<h1>Golden report</h1>\n<p>" << passed << " passed, " << failed
+         << " failed, " << updated << " updated. Each entry: the golden (expected), this run (actual) and "
+         << "their difference amplified 16 times; the gate's limits beside the metrics.</p>\n"
+         << body << "</body></html>\n";
+    page.close();
+    fs::rename(dir / "index.html.tmp", dir / "index.html");
+    if (lock >= 0) ::close(lock);
+}
+
+void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs::path& actual,
+                    const Image& diffImage) {
+    const fs::path dir = goldenReportDir();
+    fs::create_directories(dir / "img");
+    fs::create_directories(dir / "entries");
+    fs::copy_file(expected, dir / "img" / (entry.id + ".expected.png"), fs::copy_options::overwrite_existing);
+    fs::copy_file(actual, dir / "img" / (entry.id + ".actual.png"), fs::copy_options::overwrite_existing);
+    writePng(dir / "img" / (entry.id + ".diff.png"), diffImage);
+    std::ofstream(dir / "entries" / (entry.id + ".html")) << entryHtml(entry);
+    rebuildReport();
+}
+
 }  // namespace
 
-::testing::AssertionResult matchesGolden(const std::string& name, const fs::path& actualPath,
-                                         const std::string& renderer, const GoldenGate& gate) {
+::testing::AssertionResult matchesGolden(const std::string& name, const SampleRender& render,
+                                         const GoldenGate& gate) {
     const fs::path goldenPath = fs::path(PBR_GOLDEN_DIR) / (name + ".png");
     Image actual;
     try {
-        actual = readImage(actualPath, 3);
+        actual = readImage(render.image, 3);
     } catch (const std::exception& e) {
         return ::testing::AssertionFailure() << "no actual image: " << e.what();
     }
+    ReportEntry entry;
+    entry.id = name + "." + (render.backend.empty() ? "unknown" : render.backend);
+    std::replace(entry.id.begin(), entry.id.end(), '/', '-');
+    entry.sample = name;
+    entry.backend = render.backend;
+    entry.renderer = render.renderer;
+    entry.size = std::to_string(actual.width) + "x" + std::to_string(actual.height);
+    entry.gate = gate;
+
     if (updating()) {
-        fs::copy_file(actualPath, goldenPath, fs::copy_options::overwrite_existing);
-        writeMetadata(fs::path(PBR_GOLDEN_DIR) / (name + ".json"), name, actual, renderer, gate);
+        fs::copy_file(render.image, goldenPath, fs::copy_options::overwrite_existing);
+        writeMetadata(fs::path(PBR_GOLDEN_DIR) / (name + ".json"), name, actual, render.renderer, gate);
+        entry.status = "updated";
+        addReportEntry(entry, goldenPath, render.image, differenceImage(actual, actual, 16));
         std::printf("updated golden %s: look at it before committing\n", goldenPath.c_str());
         return ::testing::AssertionSuccess();
     }
@@ -81,27 +225,31 @@ void writeMetadata(const fs::path& path, const std::string& name, const Image& i
                << "no golden image (" << e.what() << "); create it with PBR_UPDATE_GOLDENS=1";
     }
     if (actual.width != expected.width || actual.height != expected.height) {
-        return ::testing::AssertionFailure()
-               << name << ": size " << actual.width << "x" << actual.height << " but the golden is "
-               << expected.width << "x" << expected.height;
+        return ::testing::AssertionFailure() << name << ": size " << entry.size << " but the golden is "
+                                             << expected.width << "x" << expected.height;
     }
     const GoldenVerdict verdict = judge(actual, expected, gate);
+    entry.status = verdict.pass ? "pass" : "fail";
+    entry.diff = verdict.diff;
+    const Image diffImage = differenceImage(actual, expected, 16);
+    addReportEntry(entry, goldenPath, render.image, diffImage);
     if (verdict.pass) return ::testing::AssertionSuccess() << name << ": " << verdict.summary;
 
-    // Leave the pictures beside each other for a person to look at.
-    const fs::path dir = actualPath.parent_path();
+    // Leave the pictures beside the render too, for a person to look at.
+    const fs::path dir = render.image.parent_path();
     const fs::path keptActual = dir / (name + ".actual.png");
     const fs::path keptExpected = dir / (name + ".expected.png");
     const fs::path diffPath = dir / (name + ".diff.png");
-    if (fs::absolute(actualPath) != fs::absolute(keptActual)) {
-        fs::copy_file(actualPath, keptActual, fs::copy_options::overwrite_existing);
+    if (fs::absolute(render.image) != fs::absolute(keptActual)) {
+        fs::copy_file(render.image, keptActual, fs::copy_options::overwrite_existing);
     }
     fs::copy_file(goldenPath, keptExpected, fs::copy_options::overwrite_existing);
-    writePng(diffPath, differenceImage(actual, expected, 16));
-    return ::testing::AssertionFailure() << name << " differs from its golden: " << verdict.summary
-                                         << "\n  actual:     " << keptActual.string()
-                                         << "\n  expected:   " << keptExpected.string()
-                                         << "\n  difference: " << diffPath.string() << " (x16)";
+    writePng(diffPath, diffImage);
+    return ::testing::AssertionFailure()
+           << name << " (" << render.backend << ") differs from its golden: " << verdict.summary
+           << "\n  actual:     " << keptActual.string() << "\n  expected:   " << keptExpected.string()
+           << "\n  difference: " << diffPath.string() << " (x16)"
+           << "\n  report:     " << goldenReportPage().string();
 }
 
 }  // namespace pbr::test

@@ -35,16 +35,22 @@ GoldenVerdict judge(const Image& actual, const Image& expected, const GoldenGate
 struct SampleRender {
     RunResult run;
     std::filesystem::path image;
-    std::string renderer;  // from the sample's "wrote ..." line
+    std::string backend;   // from the sample's "wrote ..." line: "osmesa", "egl/surfaceless", ...
+    std::string renderer;  // the GL_RENDERER string, from the same line
 };
 // Runs `sample --headless --output <output> <args...>`.
 SampleRender renderSample(const std::string& sample, const std::filesystem::path& output,
                           const std::vector<std::string>& args = {});
 
-// Compares `actual` with tests/golden/<name>.png. With PBR_UPDATE_GOLDENS=1 it replaces the
-// golden (and its .json metadata) instead and passes.
-::testing::AssertionResult matchesGolden(const std::string& name,
-                                         const std::filesystem::path& actual,
-                                         const std::string& renderer, const GoldenGate& gate = {});
+// Compares the render with tests/golden/<name>.png and adds it to the golden report. With
+// PBR_UPDATE_GOLDENS=1 it replaces the golden (and its .json metadata) instead and passes.
+::testing::AssertionResult matchesGolden(const std::string& name, const SampleRender& render,
+                                         const GoldenGate& gate = {});
+
+// The golden report: one static HTML page with, for each golden comparison, the expected,
+// actual and amplified difference pictures side by side, the metrics against the gate, the
+// verdict and the renderer. Every golden test adds its entry; the page is rebuilt each time.
+std::filesystem::path goldenReportDir();
+std::filesystem::path goldenReportPage();
 
 }  // namespace pbr::test

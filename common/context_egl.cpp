@@ -1,0 +1,196 @@
+// Headless through EGL, with no window system: the path for distributions whose Mesa (25.1 and
+// later) no longer ships OSMesa, and for machines with a GPU driver.
+//
+// Display choice: a hardware device through EGL_EXT_platform_device when a driver offers one
+// (NVIDIA's, or Mesa's on a machine with a render node); otherwise Mesa's surfaceless platform
+// (EGL_MESA_platform_surfaceless, llvmpipe when there is no GPU); otherwise Mesa's software
+// device. The context is made current without a surface (EGL_KHR_surfaceless_context), or on a
+// 1x1 pbuffer where that extension is missing: the App draws into its own framebuffers anyway.
+#include "gl.h"  // glad first
+
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "context.h"
+#include "error.h"
+
+#if defined(__SANITIZE_ADDRESS__)
+#include <dlfcn.h>
+#include <link.h>
+#endif
+
+namespace pbr {
+
+namespace {
+
+// LeakSanitizer names a leak's frames by the libraries still mapped at exit. Mesa unloads its DRI
+// driver in eglTerminate, so the driver's own leaks would show as unnamed frames that no narrow
+// suppression can match. In sanitizer builds, keep every loaded DRI driver mapped until exit.
+void keepDriDriversLoaded() {
+#if defined(__SANITIZE_ADDRESS__)
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, size_t, void*) {
+            if (info->dlpi_name && std::strstr(info->dlpi_name, "/dri/")) {
+                dlopen(info->dlpi_name, RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+            }
+            return 0;
+        },
+        nullptr);
+#endif
+}
+
+bool hasExtension(const char* list, const char* name) {
+    if (!list) return false;
+    const size_t length = std::strlen(name);
+    for (const char* at = std::strstr(list, name); at; at = std::strstr(at + 1, name)) {
+        const bool startOk = at == list || at[-1] == ' ';
+        const bool endOk = at[length] == ' ' || at[length] == '\0';
+        if (startOk && endOk) return true;
+    }
+    return false;
+}
+
+GLADapiproc eglProcAddress(const char* name) {
+    return reinterpret_cast<GLADapiproc>(eglGetProcAddress(name));
+}
+
+std::string eglErrorText() {
+    char text[32];
+    std::snprintf(text, sizeof text, "EGL error 0x%04X", unsigned(eglGetError()));
+    return text;
+}
+
+struct ChosenDisplay {
+    EGLDisplay display = EGL_NO_DISPLAY;
+    std::string platform;
+};
+
+ChosenDisplay chooseDisplay() {
+    const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+        eglGetProcAddress("eglGetPlatformDisplayEXT"));
+    if (!getPlatformDisplay) return {eglGetDisplay(EGL_DEFAULT_DISPLAY), "default"};
+
+    EGLDeviceEXT softwareDevice = nullptr;
+    if (hasExtension(clientExtensions, "EGL_EXT_platform_device")) {
+        auto queryDevices =
+            reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+        auto queryDeviceString = reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(
+            eglGetProcAddress("eglQueryDeviceStringEXT"));
+        EGLint count = 0;
+        if (queryDevices && queryDeviceString && queryDevices(0, nullptr, &count) && count > 0) {
+            std::vector<EGLDeviceEXT> devices(size_t(count), nullptr);
+            queryDevices(count, devices.data(), &count);
+            for (EGLDeviceEXT device : devices) {
+                const char* extensions = queryDeviceString(device, EGL_EXTENSIONS);
+                if (hasExtension(extensions, "EGL_MESA_device_software")) {
+                    if (!softwareDevice) softwareDevice = device;
+                    continue;
+                }
+                EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+                if (display != EGL_NO_DISPLAY) return {display, "device"};
+            }
+        }
+    }
+    if (hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
+        EGLDisplay display =
+            getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        if (display != EGL_NO_DISPLAY) return {display, "surfaceless"};
+    }
+    if (softwareDevice) {
+        EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, softwareDevice, nullptr);
+        if (display != EGL_NO_DISPLAY) return {display, "device (software)"};
+    }
+    return {eglGetDisplay(EGL_DEFAULT_DISPLAY), "default"};
+}
+
+class EglContext final : public Context {
+public:
+    EglContext(int width, int height) : width_(width), height_(height) {
+        ChosenDisplay chosen = chooseDisplay();
+        display_ = chosen.display;
+        platform_ = chosen.platform;
+        if (display_ == EGL_NO_DISPLAY) throw Error("egl: no display (" + eglErrorText() + ")");
+        EGLint major = 0, minor = 0;
+        if (!eglInitialize(display_, &major, &minor)) {
+            throw Error("egl: cannot initialise the " + platform_ + " display (" + eglErrorText() + ")");
+        }
+        keepDriDriversLoaded();
+        try {
+            create();
+        } catch (...) {
+            release();
+            throw;
+        }
+    }
+    ~EglContext() override { release(); }
+
+    bool windowed() const override { return false; }
+    std::string backend() const override { return "egl/" + platform_; }
+    glm::ivec2 framebufferSize() const override { return {width_, height_}; }
+    double seconds() const override {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    void create() {
+        if (!eglBindAPI(EGL_OPENGL_API)) throw Error("egl: desktop OpenGL is not available");
+        const EGLint configAttributes[] = {
+            EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE,
+        };
+        EGLConfig config = nullptr;
+        EGLint configs = 0;
+        if (!eglChooseConfig(display_, configAttributes, &config, 1, &configs) || configs < 1) {
+            throw Error("egl: no config for desktop OpenGL on the " + platform_ + " display");
+        }
+        const EGLint contextAttributes[] = {
+            EGL_CONTEXT_MAJOR_VERSION, 3,
+            EGL_CONTEXT_MINOR_VERSION, 3,
+            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+            EGL_NONE,
+        };
+        context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes);
+        if (context_ == EGL_NO_CONTEXT) {
+            throw Error("egl: cannot create a GL 3.3 core context (" + eglErrorText() + ")");
+        }
+        if (!hasExtension(eglQueryString(display_, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
+            const EGLint pbufferAttributes[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
+            surface_ = eglCreatePbufferSurface(display_, config, pbufferAttributes);
+            if (surface_ == EGL_NO_SURFACE) throw Error("egl: cannot create a pbuffer (" + eglErrorText() + ")");
+        }
+        if (!eglMakeCurrent(display_, surface_, surface_, context_)) {
+            throw Error("egl: cannot make the context current (" + eglErrorText() + ")");
+        }
+        if (!gladLoadGL(eglProcAddress)) throw Error("egl: cannot load the OpenGL functions (gladLoadGL failed)");
+    }
+
+    void release() {
+        if (display_ == EGL_NO_DISPLAY) return;
+        eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        if (surface_ != EGL_NO_SURFACE) eglDestroySurface(display_, surface_);
+        if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+        eglTerminate(display_);
+        eglReleaseThread();
+        display_ = EGL_NO_DISPLAY;
+    }
+
+    EGLDisplay display_ = EGL_NO_DISPLAY;
+    EGLContext context_ = EGL_NO_CONTEXT;
+    EGLSurface surface_ = EGL_NO_SURFACE;
+    std::string platform_;
+    int width_, height_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+std::unique_ptr<Context> createEglContext(int width, int height) {
+    return std::make_unique<EglContext>(width, height);
+}
+
+}  // namespace pbr
