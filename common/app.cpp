@@ -62,7 +62,8 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
             noDisplayFallback_ = true;
         }
     }
-    if (!context_) context_ = createOffscreenContext(options_.backend, options_.width, options_.height);
+    if (!context_)
+        context_ = createOffscreenContext(options_.backend, options_.width, options_.height);
     startSeconds_ = context_->seconds();
 
     installDebugOutput();

@@ -29,7 +29,8 @@ std::unique_ptr<Context> createBackend(const std::string& backend, int width, in
 #ifdef PBR_HAVE_EGL
     if (backend == "egl") return createEglContext(width, height);
 #endif
-    throw Error("--backend " + backend + ": not built into this binary (it has: " + builtInList() + ")");
+    throw Error("--backend " + backend + ": not built into this binary (it has: " + builtInList() +
+                ")");
 }
 }  // namespace
 

@@ -1,6 +1,7 @@
 #pragma once
 // Where GL runs: a GLFW window, or an offscreen context made directly (no display needed).
 // The App picks one; samples never see this file.
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +30,21 @@ public:
     virtual void swapBuffers() {}
     virtual double seconds() const = 0;  // monotonic clock
     virtual void setVsync(bool) {}
+};
+
+// The common part of the offscreen backends: a fixed size, no input, a steady clock.
+class OffscreenContext : public Context {
+public:
+    OffscreenContext(int width, int height) : width_(width), height_(height) {}
+    bool windowed() const override { return false; }
+    glm::ivec2 framebufferSize() const override { return {width_, height_}; }
+    double seconds() const override {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    int width_, height_;
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 // An offscreen context from `backend`: "osmesa", "egl", or "" for the first that works, in

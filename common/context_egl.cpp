@@ -11,7 +11,6 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
-#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -109,16 +108,17 @@ ChosenDisplay chooseDisplay() {
     return {eglGetDisplay(EGL_DEFAULT_DISPLAY), "default"};
 }
 
-class EglContext final : public Context {
+class EglContext final : public OffscreenContext {
 public:
-    EglContext(int width, int height) : width_(width), height_(height) {
+    EglContext(int width, int height) : OffscreenContext(width, height) {
         ChosenDisplay chosen = chooseDisplay();
         display_ = chosen.display;
         platform_ = chosen.platform;
         if (display_ == EGL_NO_DISPLAY) throw Error("egl: no display (" + eglErrorText() + ")");
         EGLint major = 0, minor = 0;
         if (!eglInitialize(display_, &major, &minor)) {
-            throw Error("egl: cannot initialise the " + platform_ + " display (" + eglErrorText() + ")");
+            throw Error("egl: cannot initialise the " + platform_ + " display (" + eglErrorText() +
+                        ")");
         }
         keepDriDriversLoaded();
         try {
@@ -130,12 +130,7 @@ public:
     }
     ~EglContext() override { release(); }
 
-    bool windowed() const override { return false; }
     std::string backend() const override { return "egl/" + platform_; }
-    glm::ivec2 framebufferSize() const override { return {width_, height_}; }
-    double seconds() const override {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
 
 private:
     void create() {
@@ -149,24 +144,30 @@ private:
             throw Error("egl: no config for desktop OpenGL on the " + platform_ + " display");
         }
         const EGLint contextAttributes[] = {
-            EGL_CONTEXT_MAJOR_VERSION, 3,
-            EGL_CONTEXT_MINOR_VERSION, 3,
-            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+            EGL_CONTEXT_MAJOR_VERSION,
+            3,
+            EGL_CONTEXT_MINOR_VERSION,
+            3,
+            EGL_CONTEXT_OPENGL_PROFILE_MASK,
+            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
             EGL_NONE,
         };
         context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes);
         if (context_ == EGL_NO_CONTEXT) {
             throw Error("egl: cannot create a GL 3.3 core context (" + eglErrorText() + ")");
         }
-        if (!hasExtension(eglQueryString(display_, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
+        if (!hasExtension(eglQueryString(display_, EGL_EXTENSIONS),
+                          "EGL_KHR_surfaceless_context")) {
             const EGLint pbufferAttributes[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
             surface_ = eglCreatePbufferSurface(display_, config, pbufferAttributes);
-            if (surface_ == EGL_NO_SURFACE) throw Error("egl: cannot create a pbuffer (" + eglErrorText() + ")");
+            if (surface_ == EGL_NO_SURFACE)
+                throw Error("egl: cannot create a pbuffer (" + eglErrorText() + ")");
         }
         if (!eglMakeCurrent(display_, surface_, surface_, context_)) {
             throw Error("egl: cannot make the context current (" + eglErrorText() + ")");
         }
-        if (!gladLoadGL(eglProcAddress)) throw Error("egl: cannot load the OpenGL functions (gladLoadGL failed)");
+        if (!gladLoadGL(eglProcAddress))
+            throw Error("egl: cannot load the OpenGL functions (gladLoadGL failed)");
     }
 
     void release() {
@@ -183,8 +184,6 @@ private:
     EGLContext context_ = EGL_NO_CONTEXT;
     EGLSurface surface_ = EGL_NO_SURFACE;
     std::string platform_;
-    int width_, height_;
-    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace

@@ -10,7 +10,6 @@
 #endif
 #include <GL/osmesa.h>
 
-#include <chrono>
 #include <vector>
 
 #include "context.h"
@@ -25,9 +24,9 @@ GLADapiproc osmesaProcAddress(const char* name) {
     return reinterpret_cast<GLADapiproc>(OSMesaGetProcAddress(name));
 }
 
-class OsMesaContext final : public Context {
+class OsMesaContext final : public OffscreenContext {
 public:
-    OsMesaContext(int width, int height) : width_(width), height_(height) {
+    OsMesaContext(int width, int height) : OffscreenContext(width, height) {
         const int attributes[] = {
             OSMESA_FORMAT,
             OSMESA_RGBA,
@@ -64,18 +63,11 @@ public:
         OSMesaDestroyContext(context_);
     }
 
-    bool windowed() const override { return false; }
     std::string backend() const override { return "osmesa"; }
-    glm::ivec2 framebufferSize() const override { return {width_, height_}; }
-    double seconds() const override {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    }
 
 private:
     OSMesaContext context_ = nullptr;
     std::vector<unsigned char> buffer_;
-    int width_, height_;
-    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace

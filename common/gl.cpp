@@ -22,7 +22,8 @@ std::string GlObjectCensus::describe() const {
     std::string text;
     auto add = [&text](int count, const char* noun) {
         if (count == 0) return;
-        text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+        text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + noun +
+                (count == 1 ? "" : "s");
     };
     add(textures, "texture");
     add(buffers, "buffer");

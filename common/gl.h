@@ -15,7 +15,8 @@ struct GlObjectCensus {
     int textures = 0, buffers = 0, vertexArrays = 0, framebuffers = 0, renderbuffers = 0,
         programs = 0, shaders = 0;
     int total() const {
-        return textures + buffers + vertexArrays + framebuffers + renderbuffers + programs + shaders;
+        return textures + buffers + vertexArrays + framebuffers + renderbuffers + programs +
+               shaders;
     }
     std::string describe() const;  // "2 textures, 1 buffer"; empty when none
 };

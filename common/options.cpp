@@ -28,7 +28,8 @@ constexpr CommonFlag kCommonFlags[] = {
     {"--msaa", "N", "samples per pixel: 0/1 (off), 2, 4, 8 (default 4)"},
     {"--camera", "x,y,z[,yaw,pitch]", "camera start position (and yaw/pitch in degrees)"},
     {"--benchmark", nullptr, "time the frames and print one JSON line of statistics"},
-    {"--backend", "osmesa|egl", "offscreen backend (implies --headless; default: the first that works)"},
+    {"--backend", "osmesa|egl",
+     "offscreen backend (implies --headless; default: the first that works)"},
 };
 
 // Every bad value names its flag; the usage text is attached where the App knows the program.

@@ -32,7 +32,7 @@ struct Options {
     std::optional<double> time;  // fixed scene time; headless default 0
     int msaa = 4;                // samples per pixel; 0 or 1 turns multisampling off
     std::optional<CameraStart> camera;
-    std::string backend;          // offscreen backend: "osmesa", "egl", or "" (automatic)
+    std::string backend;  // offscreen backend: "osmesa", "egl", or "" (automatic)
     std::map<std::string, std::string> sampleFlags;  // "--lights" -> "3"; switches -> ""
 
     bool has(const std::string& flag) const { return sampleFlags.count(flag) != 0; }

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <optional>
 #include <set>
-#include <string_view>
 #include <sstream>
+#include <string_view>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -30,7 +30,8 @@ std::string lineDirective(int fileId, int line) {
 struct Scanner {
     std::string_view rest;
     void skipSpaces() {
-        while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+        while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t'))
+            rest.remove_prefix(1);
     }
     bool eat(std::string_view token) {
         if (rest.substr(0, token.size()) != token) return false;
@@ -55,8 +56,8 @@ std::optional<std::string> includeArgument(const std::string& line) {
     scan.skipSpaces();
     if (!scan.eat("include")) return std::nullopt;
     std::string argument(scan.rest);
-    while (!argument.empty() && (argument.back() == ' ' || argument.back() == '\t' ||
-                                 argument.back() == '\r')) {
+    while (!argument.empty() &&
+           (argument.back() == ' ' || argument.back() == '\t' || argument.back() == '\r')) {
         argument.pop_back();
     }
     const size_t start = argument.find_first_not_of(" \t");
@@ -143,8 +144,8 @@ std::vector<std::string> mapShaderLog(const std::string& log, const std::vector<
         bool parsed = false;
         if (scan.number(source)) {
             if (scan.eat(":")) {
-                parsed = scan.number(encoded) && scan.eat("(") && scan.number(column) &&
-                         scan.eat("):");
+                parsed =
+                    scan.number(encoded) && scan.eat("(") && scan.number(column) && scan.eat("):");
             } else if (scan.eat("(")) {
                 parsed = scan.number(encoded) && scan.eat(")");
                 scan.skipSpaces();

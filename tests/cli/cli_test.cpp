@@ -72,18 +72,25 @@ TEST(Cli, HelpPrintsUsageAndExits0) {
     EXPECT_TRUE(run.err.empty()) << run.err;
 }
 
-TEST(Cli, MissingShaderFileIsNamed) {
-    const fs::path dir = testOutputDir("cli_missing_shader");
-    const fs::path shaders = copyShaders(dir);
-    fs::remove(shaders / "01_lighting" / "pbr.frag");
+// Runs sample 01 on the shaders in `shaders`, writing into `dir`; expects exit 1, no picture and
+// exactly one line on stderr, which it returns.
+std::string oneLineFailure(const fs::path& dir, const fs::path& shaders) {
     const RunResult run =
         runSample({"01_lighting", "--headless", "--output", (dir / "x.png").string()},
                   {.setEnv = {{"PBR_SHADER_DIR", shaders.string()}}});
     EXPECT_EQ(run.exitCode, 1);
-    const auto lines = run.errLines();
-    ASSERT_EQ(lines.size(), 1u) << run.err;
-    EXPECT_NE(lines[0].find("01_lighting/pbr.frag: cannot open"), std::string::npos) << lines[0];
     EXPECT_FALSE(fs::exists(dir / "x.png"));
+    const auto lines = run.errLines();
+    EXPECT_EQ(lines.size(), 1u) << run.err;
+    return lines.empty() ? "" : lines[0];
+}
+
+TEST(Cli, MissingShaderFileIsNamed) {
+    const fs::path dir = testOutputDir("cli_missing_shader");
+    const fs::path shaders = copyShaders(dir);
+    fs::remove(shaders / "01_lighting" / "pbr.frag");
+    const std::string line = oneLineFailure(dir, shaders);
+    EXPECT_NE(line.find("01_lighting/pbr.frag: cannot open"), std::string::npos) << line;
 }
 
 // Breaks `file` (relative to shaders/) by replacing `from` with `to`, runs sample 01 on that copy
@@ -95,16 +102,10 @@ void expectCompileErrorAt(const std::string& testName, const std::string& file,
     replaceInFile(shaders / file, from, to);
     const int line = lineOf(shaders / file, to);
     ASSERT_GT(line, 0);
-    const RunResult run =
-        runSample({"01_lighting", "--headless", "--output", (dir / "x.png").string()},
-                  {.setEnv = {{"PBR_SHADER_DIR", shaders.string()}}});
-    EXPECT_EQ(run.exitCode, 1);
-    const auto lines = run.errLines();
-    ASSERT_EQ(lines.size(), 1u) << run.err;
+    const std::string message = oneLineFailure(dir, shaders);
     const std::string where = file + ":" + std::to_string(line) + ": ";
-    EXPECT_NE(lines[0].find(where), std::string::npos) << lines[0] << " (expected " << where << ")";
-    EXPECT_NE(lines[0].find("error"), std::string::npos) << lines[0];
-    EXPECT_FALSE(fs::exists(dir / "x.png"));
+    EXPECT_NE(message.find(where), std::string::npos) << message << " (expected " << where << ")";
+    EXPECT_NE(message.find("error"), std::string::npos) << message;
 }
 
 TEST(Cli, CompileErrorPointsAtTheLineInTheFile) {

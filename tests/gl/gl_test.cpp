@@ -79,7 +79,8 @@ TEST(Gl, ALeakedObjectIsReportedAtExit) {
         GLuint texture = 0;
         glGenTextures(1, &texture);  // by hand, never deleted
         glBindTexture(GL_TEXTURE_2D, texture);
-        while (app.nextFrame()) {}
+        while (app.nextFrame()) {
+        }
     }
     const std::string err = ::testing::internal::GetCapturedStderr();
     EXPECT_NE(err.find("gl_test: error: GL objects leaked: 1 texture\n"), std::string::npos) << err;

@@ -79,8 +79,10 @@ TEST(Golden, BackendsGiveTheSamePixels) {
         expectCleanRun(render);
         const std::string bytes = bytesOf(render.image);
         ASSERT_FALSE(bytes.empty());
-        if (first.empty()) first = bytes;
-        else EXPECT_TRUE(bytes == first) << backend << " differs from " << backends[0];
+        if (first.empty())
+            first = bytes;
+        else
+            EXPECT_TRUE(bytes == first) << backend << " differs from " << backends[0];
     }
 }
 
@@ -91,24 +93,19 @@ TEST(Golden, GateRejectsSmallChanges) {
     const Image golden = readImage(fs::path(PBR_GOLDEN_DIR) / "01_lighting.png", 3);
     const GoldenGate gate;
 
-    const SampleRender fresh = renderSample("01_lighting", dir / "fresh.png");
-    expectCleanRun(fresh);
-    const GoldenVerdict same = judge(readImage(fresh.image, 3), golden, gate);
-    EXPECT_TRUE(same.pass) << same.summary;
-
-    const SampleRender rougher =
-        renderSample("01_lighting", dir / "rougher.png", {"--roughness-offset", "0.05"});
-    expectCleanRun(rougher);
-    const GoldenVerdict roughVerdict = judge(readImage(rougher.image, 3), golden, gate);
-    EXPECT_FALSE(roughVerdict.pass) << "roughness + 0.05 passed the gate: " << roughVerdict.summary;
-    std::printf("roughness + 0.05: %s\n", roughVerdict.summary.c_str());
-
-    const SampleRender threeLights =
-        renderSample("01_lighting", dir / "three.png", {"--lights", "3"});
-    expectCleanRun(threeLights);
-    const GoldenVerdict lightVerdict = judge(readImage(threeLights.image, 3), golden, gate);
-    EXPECT_FALSE(lightVerdict.pass) << "a missing light passed the gate: " << lightVerdict.summary;
-    std::printf("3 lights: %s\n", lightVerdict.summary.c_str());
+    auto verdictFor = [&](const std::string& file, const std::vector<std::string>& args) {
+        const SampleRender render = renderSample("01_lighting", dir / file, args);
+        expectCleanRun(render);
+        const GoldenVerdict verdict = judge(readImage(render.image, 3), golden, gate);
+        std::printf("%s: %s\n", file.c_str(), verdict.summary.c_str());
+        return verdict;
+    };
+    const GoldenVerdict fresh = verdictFor("fresh.png", {});
+    EXPECT_TRUE(fresh.pass) << fresh.summary;
+    const GoldenVerdict rougher = verdictFor("rougher.png", {"--roughness-offset", "0.05"});
+    EXPECT_FALSE(rougher.pass) << "roughness + 0.05 passed the gate: " << rougher.summary;
+    const GoldenVerdict threeLights = verdictFor("three-lights.png", {"--lights", "3"});
+    EXPECT_FALSE(threeLights.pass) << "a missing light passed the gate: " << threeLights.summary;
 }
 
 TEST(Golden, HeadlessOutputIsBitIdentical) {

@@ -38,12 +38,14 @@ int main(int argc, char** argv) {
         const std::string source = html.substr(start, html.find('"', start) - start);
         ++pictures;
         if (!fs::exists(dir / source)) {
-            std::fprintf(stderr, "error: %s shows %s, which does not exist\n", page.c_str(), source.c_str());
+            std::fprintf(stderr, "error: %s shows %s, which does not exist\n", page.c_str(),
+                         source.c_str());
             ++missing;
         }
     }
     const bool hasEntries = html.find("<section class=") != std::string::npos;
-    if (!hasEntries || pictures == 0) std::fprintf(stderr, "error: %s has no entries\n", page.c_str());
+    if (!hasEntries || pictures == 0)
+        std::fprintf(stderr, "error: %s has no entries\n", page.c_str());
     std::printf("golden report: %s (%d pictures)\n", page.c_str(), pictures);
     return missing == 0 && hasEntries && pictures > 0 ? 0 : 1;
 }

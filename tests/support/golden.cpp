@@ -3,10 +3,10 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <fcntl.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fcntl.h>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -54,8 +54,12 @@ SampleRender renderSample(const std::string& sample, const fs::path& output,
     return render;
 }
 
-fs::path goldenReportDir() { return fs::path(PBR_TEST_OUTPUT_DIR) / "golden-report"; }
-fs::path goldenReportPage() { return goldenReportDir() / "index.html"; }
+fs::path goldenReportDir() {
+    return fs::path(PBR_TEST_OUTPUT_DIR) / "golden-report";
+}
+fs::path goldenReportPage() {
+    return goldenReportDir() / "index.html";
+}
 
 namespace {
 
@@ -78,11 +82,20 @@ std::string htmlEscape(const std::string& text) {
     std::string out;
     for (char c : text) {
         switch (c) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '&':
+                out += "&amp;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
         }
     }
     return out;
@@ -98,7 +111,7 @@ std::string number(double value, int digits) {
 }
 
 struct ReportEntry {
-    std::string id;  // "01_lighting.osmesa"
+    std::string id;      // "01_lighting.osmesa"
     std::string status;  // "pass", "fail", "updated"
     std::string sample, backend, renderer, size;
     GoldenGate gate;
@@ -106,33 +119,43 @@ struct ReportEntry {
 };
 
 std::string entryHtml(const ReportEntry& e) {
-    const std::string verdict = e.status == "pass" ? "PASS" : e.status == "fail" ? "FAIL" : "UPDATED";
+    const std::string verdict = e.status == "pass"   ? "PASS"
+                                : e.status == "fail" ? "FAIL"
+                                                     : "UPDATED";
     // ok: 1 within the limit, 0 over it, -1 informative (no limit)
-    auto row = [](const std::string& metric, const std::string& value, const std::string& limit, int ok) {
-        const std::string verdict = ok < 0 ? "<td></td>" : ok ? "<td class=\"ok\">ok</td>" : "<td class=\"bad\">over</td>";
-        return "<tr><td>" + metric + "</td><td>" + value + "</td><td>" + limit + "</td>" + verdict + "</tr>\n";
+    auto row = [](const std::string& metric, const std::string& value, const std::string& limit,
+                  int ok) {
+        const std::string verdict = ok < 0 ? "<td></td>"
+                                    : ok   ? "<td class=\"ok\">ok</td>"
+                                           : "<td class=\"bad\">over</td>";
+        return "<tr><td>" + metric + "</td><td>" + value + "</td><td>" + limit + "</td>" + verdict +
+               "</tr>\n";
     };
     std::ostringstream html;
     html << "<!-- status: " << e.status << " -->\n"
          << "<section class=\"" << e.status << "\" id=\"" << htmlEscape(e.id) << "\">\n"
-         << "<h2>" << htmlEscape(e.sample) << " <small>" << htmlEscape(e.backend) << "</small> <span class=\"verdict\">"
-         << verdict << "</span></h2>\n"
-         << "<p>" << htmlEscape(e.size) << " &middot; renderer: <code>" << htmlEscape(e.renderer) << "</code></p>\n"
+         << "<h2>" << htmlEscape(e.sample) << " <small>" << htmlEscape(e.backend)
+         << "</small> <span class=\"verdict\">" << verdict << "</span></h2>\n"
+         << "<p>" << htmlEscape(e.size) << " &middot; renderer: <code>" << htmlEscape(e.renderer)
+         << "</code></p>\n"
          << "<table><tr><th>metric</th><th>value</th><th>limit</th><th></th></tr>\n"
          << row("pixels with a channel off by more than " + std::to_string(e.gate.channelThreshold),
-                std::to_string(e.diff.pixelsOverThreshold) + " (" + number(e.diff.fractionOverThreshold * 100.0, 4) + " %)",
+                std::to_string(e.diff.pixelsOverThreshold) + " (" +
+                    number(e.diff.fractionOverThreshold * 100.0, 4) + " %)",
                 "&le; " + number(e.gate.maxFractionOver * 100.0, 4) + " %",
                 e.diff.fractionOverThreshold <= e.gate.maxFractionOver)
          << row("PSNR", number(e.diff.psnr, 2) + " dB", "&ge; " + number(e.gate.minPsnr, 1) + " dB",
                 e.diff.psnr >= e.gate.minPsnr)
-         << row("largest channel difference", std::to_string(e.diff.maxChannelDiff) + " / 255", "", -1)
+         << row("largest channel difference", std::to_string(e.diff.maxChannelDiff) + " / 255", "",
+                -1)
          << row("mean channel difference", number(e.diff.meanAbsDiff, 4) + " / 255", "", -1)
          << "</table>\n<div class=\"pictures\">\n";
     for (const char* kind : {"expected", "actual", "diff"}) {
         const std::string src = "img/" + e.id + "." + kind + ".png";
-        html << "<figure><a href=\"" << htmlEscape(src) << "\"><img src=\"" << htmlEscape(src) << "\" alt=\""
-             << kind << "\"></a><figcaption>"
-             << (std::string(kind) == "diff" ? "difference &times;16" : kind) << "</figcaption></figure>\n";
+        html << "<figure><a href=\"" << htmlEscape(src) << "\"><img src=\"" << htmlEscape(src)
+             << "\" alt=\"" << kind << "\"></a><figcaption>"
+             << (std::string(kind) == "diff" ? "difference &times;16" : kind)
+             << "</figcaption></figure>\n";
     }
     html << "</div>\n</section>\n";
     return html.str();
@@ -150,9 +173,12 @@ void rebuildReport() {
     std::string failures, others;  // failures first: they are what a reader opens the page for
     for (const fs::path& entry : entries) {
         const std::string html = readTextFile(entry);
-        if (html.rfind("<!-- status: pass", 0) == 0) ++passed;
-        else if (html.rfind("<!-- status: fail", 0) == 0) ++failed;
-        else ++updated;
+        if (html.rfind("<!-- status: pass", 0) == 0)
+            ++passed;
+        else if (html.rfind("<!-- status: fail", 0) == 0)
+            ++failed;
+        else
+            ++updated;
         (html.rfind("<!-- status: fail", 0) == 0 ? failures : others) += html;
     }
     const std::string body = failures + others;
@@ -160,16 +186,20 @@ void rebuildReport() {
     page << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
          << "<title>Golden report: " << failed << " failed</title>\n<style>\n"
          << "body{font:14px/1.4 sans-serif;margin:1.5em;background:#fafafa;color:#222}\n"
-         << "section{background:#fff;border:1px solid #ccc;border-left:8px solid #2a2;margin:1em 0;padding:.5em 1em}\n"
+         << "section{background:#fff;border:1px solid #ccc;border-left:8px solid #2a2;margin:1em "
+            "0;padding:.5em 1em}\n"
          << "section.fail{border-left-color:#d22}section.updated{border-left-color:#d90}\n"
-         << ".verdict{font-size:.8em;padding:.1em .5em;border-radius:3px;background:#2a2;color:#fff}\n"
+         << ".verdict{font-size:.8em;padding:.1em "
+            ".5em;border-radius:3px;background:#2a2;color:#fff}\n"
          << ".fail .verdict{background:#d22}.updated .verdict{background:#d90}\n"
-         << "table{border-collapse:collapse}td,th{border:1px solid #ddd;padding:.2em .6em;text-align:left}\n"
+         << "table{border-collapse:collapse}td,th{border:1px solid #ddd;padding:.2em "
+            ".6em;text-align:left}\n"
          << "td.ok{color:#2a2}td.bad{color:#d22;font-weight:bold}\n"
          << ".pictures{display:flex;gap:.8em;flex-wrap:wrap}figure{margin:.5em 0}\n"
          << "img{width:420px;border:1px solid #999;image-rendering:pixelated;background:#000}\n"
          << "</style></head><body>\n<h1>Golden report</h1>\n<p>" << passed << " passed, " << failed
-         << " failed, " << updated << " updated. Each entry: the golden (expected), this run (actual) and "
+         << " failed, " << updated
+         << " updated. Each entry: the golden (expected), this run (actual) and "
          << "their difference amplified 16 times; the gate's limits beside the metrics.</p>\n"
          << body << "</body></html>\n";
     page.close();
@@ -182,8 +212,10 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
     const fs::path dir = goldenReportDir();
     fs::create_directories(dir / "img");
     fs::create_directories(dir / "entries");
-    fs::copy_file(expected, dir / "img" / (entry.id + ".expected.png"), fs::copy_options::overwrite_existing);
-    fs::copy_file(actual, dir / "img" / (entry.id + ".actual.png"), fs::copy_options::overwrite_existing);
+    fs::copy_file(expected, dir / "img" / (entry.id + ".expected.png"),
+                  fs::copy_options::overwrite_existing);
+    fs::copy_file(actual, dir / "img" / (entry.id + ".actual.png"),
+                  fs::copy_options::overwrite_existing);
     writePng(dir / "img" / (entry.id + ".diff.png"), diffImage);
     std::ofstream(dir / "entries" / (entry.id + ".html")) << entryHtml(entry);
     rebuildReport();
@@ -211,7 +243,8 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
 
     if (updating()) {
         fs::copy_file(render.image, goldenPath, fs::copy_options::overwrite_existing);
-        writeMetadata(fs::path(PBR_GOLDEN_DIR) / (name + ".json"), name, actual, render.renderer, gate);
+        writeMetadata(fs::path(PBR_GOLDEN_DIR) / (name + ".json"), name, actual, render.renderer,
+                      gate);
         entry.status = "updated";
         addReportEntry(entry, goldenPath, render.image, differenceImage(actual, actual, 16));
         std::printf("updated golden %s: look at it before committing\n", goldenPath.c_str());
@@ -225,8 +258,9 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
                << "no golden image (" << e.what() << "); create it with PBR_UPDATE_GOLDENS=1";
     }
     if (actual.width != expected.width || actual.height != expected.height) {
-        return ::testing::AssertionFailure() << name << ": size " << entry.size << " but the golden is "
-                                             << expected.width << "x" << expected.height;
+        return ::testing::AssertionFailure()
+               << name << ": size " << entry.size << " but the golden is " << expected.width << "x"
+               << expected.height;
     }
     const GoldenVerdict verdict = judge(actual, expected, gate);
     entry.status = verdict.pass ? "pass" : "fail";
@@ -247,8 +281,9 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
     writePng(diffPath, diffImage);
     return ::testing::AssertionFailure()
            << name << " (" << render.backend << ") differs from its golden: " << verdict.summary
-           << "\n  actual:     " << keptActual.string() << "\n  expected:   " << keptExpected.string()
-           << "\n  difference: " << diffPath.string() << " (x16)"
+           << "\n  actual:     " << keptActual.string()
+           << "\n  expected:   " << keptExpected.string() << "\n  difference: " << diffPath.string()
+           << " (x16)"
            << "\n  report:     " << goldenReportPage().string();
 }
 
