@@ -113,6 +113,36 @@ std::optional<std::string> App::flag(const std::string& name) const {
     return found->second;
 }
 
+std::string App::flagChoice(const std::string& name,
+                            const std::vector<std::string>& choices) const {
+    const auto value = flag(name);
+    if (!value) return choices.front();
+    for (const std::string& choice : choices) {
+        if (*value == choice) return choice;
+    }
+    std::string list;
+    for (const std::string& choice : choices) list += (list.empty() ? "" : " or ") + choice;
+    throw UsageError(name + ": '" + *value + "' is not " + list, usage_);
+}
+
+int App::flagInt(const std::string& name, int min, int max, int fallback) const {
+    const auto value = flag(name);
+    try {
+        return value ? parseIntFlag(name, *value, min, max) : fallback;
+    } catch (const UsageError& e) {
+        throw UsageError(e.what(), usage_);
+    }
+}
+
+float App::flagFloat(const std::string& name, float fallback) const {
+    const auto value = flag(name);
+    try {
+        return value ? parseFloatFlag(name, *value) : fallback;
+    } catch (const UsageError& e) {
+        throw UsageError(e.what(), usage_);
+    }
+}
+
 Shader& App::shader(const std::string& vertex, const std::string& fragment) {
     return shaders_.emplace_back(vertex, fragment);
 }

@@ -50,6 +50,11 @@ public:
     const Options& options() const { return options_; }
     // The value of one of the sample's own flags, when given.
     std::optional<std::string> flag(const std::string& name) const;
+    // A sample flag's value checked and converted; a bad value is a usage error (exit 2) that
+    // names the flag. `choices`: the allowed words, the first is the default.
+    std::string flagChoice(const std::string& name, const std::vector<std::string>& choices) const;
+    int flagInt(const std::string& name, int min, int max, int fallback) const;
+    float flagFloat(const std::string& name, float fallback) const;
 
     FlyCamera& camera() { return camera_; }
     glm::mat4 view() const { return camera_.viewMatrix(); }

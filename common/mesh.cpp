@@ -32,8 +32,8 @@ MeshData sphereVertices(int xSegments, int ySegments) {
             mesh.uvs.push_back({u, v});
             // dP/du without the sin(theta) factor, so it stays defined at the poles.
             const glm::vec3 tangent(-std::sin(phi), 0.0f, std::cos(phi));
-            // cross(N, T) points south, the way v grows: w = +1.
-            mesh.tangents.push_back(glm::vec4(tangent, 1.0f));
+            // The image's top row lies at v = 0, the north pole; cross(N, T) points south: w = -1.
+            mesh.tangents.push_back(glm::vec4(tangent, -1.0f));
         }
     }
     return mesh;
@@ -92,13 +92,13 @@ MeshData cube() {
     for (const Face& face : faces) {
         const glm::vec3 bitangent = glm::cross(face.normal, face.tangent);
         const std::uint32_t base = std::uint32_t(mesh.positions.size());
-        const glm::vec2 corners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-        for (const glm::vec2& uv : corners) {
-            const glm::vec2 s = uv * 2.0f - 1.0f;
+        // corners in face space (-1..1), counter-clockwise seen from outside
+        const glm::vec2 corners[] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+        for (const glm::vec2& s : corners) {
             mesh.positions.push_back(face.normal + face.tangent * s.x + bitangent * s.y);
             mesh.normals.push_back(face.normal);
-            mesh.uvs.push_back(uv);
-            mesh.tangents.push_back(glm::vec4(face.tangent, 1.0f));
+            mesh.uvs.push_back({s.x * 0.5f + 0.5f, 0.5f - s.y * 0.5f});  // v = 0 along the top edge
+            mesh.tangents.push_back(glm::vec4(face.tangent, 1.0f));  // cross(N, T) points up: w = 1
         }
         mesh.indices.insert(mesh.indices.end(),
                             {base, base + 1, base + 2, base, base + 2, base + 3});

@@ -16,8 +16,10 @@ struct MeshData {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
-    // xyz: unit tangent along +u (dP/du); w: handedness, so that w * cross(normal, tangent) points
-    // along +v (dP/dv), as in MikkTSpace and glTF.
+    // xyz: unit tangent along +u (dP/du). w: handedness, chosen so that the bitangent
+    // B = w * cross(normal, tangent) points to the top of the texture image as it lies on the
+    // surface, the way the green channel of an OpenGL-convention (+Y) normal map points. The suite
+    // uploads images top row first (row 0 at v = 0), as the tutorial does.
     std::vector<glm::vec4> tangents;
     std::vector<std::uint32_t> indices;
     Primitive primitive = Primitive::Triangles;
@@ -31,7 +33,8 @@ MeshData uvSphere(int xSegments = 64, int ySegments = 64);
 // The same sphere as an indexed triangle list (6 * X * Y indices), counter-clockwise seen from
 // outside; the degenerate triangles at the poles are kept so the count stays regular.
 MeshData uvSphereTriangles(int xSegments = 64, int ySegments = 64);
-// Axis-aligned cube from -1 to 1, 24 vertices (flat normals), counter-clockwise outside.
+// Axis-aligned cube from -1 to 1, 24 vertices (flat normals), counter-clockwise outside; each
+// face shows a texture upright (v = 0 along its top edge).
 MeshData cube();
 // A quad in the XY plane from -1 to 1 facing +Z, uv (0,0) at the bottom left: for full-screen
 // passes.

@@ -25,6 +25,9 @@ fs::path shaderDir() {
 fs::path resourceDir() {
     return fromEnvOr("PBR_RESOURCE_DIR", PBR_RESOURCE_DIR);
 }
+fs::path materialDir() {
+    return fromEnvOr("PBR_MATERIAL_DIR", PBR_MATERIAL_DIR);
+}
 
 std::string displayPath(const fs::path& path) {
     std::error_code ec;

@@ -9,6 +9,8 @@ namespace pbr {
 std::filesystem::path shaderDir();
 // resources/ of the source tree, or $PBR_RESOURCE_DIR when set.
 std::filesystem::path resourceDir();
+// The material sets the build bakes (build/.../resources/materials), or $PBR_MATERIAL_DIR.
+std::filesystem::path materialDir();
 // A path as a user wants to read it in a message: relative to the working directory when it lies
 // below it, absolute otherwise.
 std::string displayPath(const std::filesystem::path& path);

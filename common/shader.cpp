@@ -323,4 +323,9 @@ void Shader::set(const std::string& name, const glm::mat4& value) {
     store(name, value);
 }
 
+void Shader::setModel(const glm::mat4& model) {
+    set("model", model);
+    set("normalMatrix", glm::transpose(glm::inverse(glm::mat3(model))));
+}
+
 }  // namespace pbr

@@ -50,6 +50,8 @@ public:
     void set(const std::string& name, const glm::vec4& value);
     void set(const std::string& name, const glm::mat3& value);
     void set(const std::string& name, const glm::mat4& value);
+    // "model" and its "normalMatrix" (transpose(inverse(mat3(model))), right for any model matrix).
+    void setModel(const glm::mat4& model);
 
     GLuint id() const { return program_.id(); }
     std::string name() const;

@@ -1,36 +1,101 @@
 #include "texture.h"
 
 #include "error.h"
+#include "paths.h"
 
 namespace pbr {
 
-Texture2D::Texture2D(const Image& image, ColorSpace colorSpace)
-    : width_(image.width), height_(image.height) {
+namespace {
+// GL 3.3 has sRGB formats for RGB and RGBA only: grey (and grey + alpha) become RGB (RGBA).
+Image widenGrey(const Image& image) {
+    if (image.channels > 2) return image;
+    Image wide{image.width, image.height, image.channels + 2, {}};
+    wide.pixels.reserve(size_t(image.width) * size_t(image.height) * size_t(wide.channels));
+    for (size_t i = 0; i < image.pixels.size(); i += size_t(image.channels)) {
+        wide.pixels.insert(wide.pixels.end(), 3, image.pixels[i]);
+        if (image.channels == 2) wide.pixels.push_back(image.pixels[i + 1]);
+    }
+    return wide;
+}
+}  // namespace
+
+Texture2D::Texture2D(const Image& source, ColorSpace colorSpace, TextureFilter filter)
+    : width_(source.width), height_(source.height) {
     static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
-    if (image.channels < 1 || image.channels > 4)
+    static constexpr GLenum kLinear[] = {GL_R8, GL_RG8, GL_RGB8, GL_RGBA8};
+    if (source.channels < 1 || source.channels > 4) {
         throw Error("Texture2D: unsupported channel count");
+    }
+    const Image image = colorSpace == ColorSpace::Srgb ? widenGrey(source) : source;
     const GLenum format = kFormats[image.channels - 1];
-    GLenum internalFormat = format == GL_RED   ? GL_R8
-                            : format == GL_RG  ? GL_RG8
-                            : format == GL_RGB ? GL_RGB8
-                                               : GL_RGBA8;
+    GLenum internalFormat = kLinear[image.channels - 1];
     if (colorSpace == ColorSpace::Srgb) {
-        if (image.channels < 3) throw Error("Texture2D: sRGB needs an RGB or RGBA image");
         internalFormat = image.channels == 3 ? GL_SRGB8 : GL_SRGB8_ALPHA8;
     }
     glBindTexture(GL_TEXTURE_2D, texture_.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), image.width, image.height, 0, format,
                  GL_UNSIGNED_BYTE, image.pixels.data());
-    glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    if (filter == TextureFilter::Trilinear) {
+        glGenerateMipmap(GL_TEXTURE_2D);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    } else {
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
 }
 
-Texture2D Texture2D::load(const std::filesystem::path& path, ColorSpace colorSpace) {
-    return Texture2D(readImage(path), colorSpace);
+Texture2D Texture2D::load(const std::filesystem::path& path, ColorSpace colorSpace,
+                          TextureFilter filter) {
+    return Texture2D(readImage(path), colorSpace, filter);
+}
+
+std::optional<std::filesystem::path> findMap(const std::filesystem::path& dir,
+                                             const std::string& name) {
+    for (const char* extension : {".png", ".jpg", ".jpeg"}) {
+        const std::filesystem::path candidate = dir / (name + extension);
+        std::error_code ec;
+        if (std::filesystem::exists(candidate, ec)) return candidate;
+    }
+    return std::nullopt;
+}
+
+PbrTextures loadPbrTextures(const std::filesystem::path& dir, TextureFilter filter) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) {
+        throw Error(displayPath(dir) + ": " +
+                    (std::filesystem::exists(dir, ec) ? "not a folder" : "no such folder"));
+    }
+    auto load = [&](const char* name, ColorSpace colorSpace) {
+        const auto path = findMap(dir, name);
+        if (!path) {
+            throw Error(displayPath(dir / (std::string(name) + ".png")) +
+                        ": missing (a material folder needs albedo, normal, metallic and roughness "
+                        "as .png or .jpg; ao is optional)");
+        }
+        return Texture2D::load(*path, colorSpace, filter);
+    };
+    Texture2D albedo = load("albedo", ColorSpace::Srgb);
+    Texture2D normal = load("normal", ColorSpace::Linear);
+    Texture2D metallic = load("metallic", ColorSpace::Linear);
+    Texture2D roughness = load("roughness", ColorSpace::Linear);
+    Texture2D ao = findMap(dir, "ao")
+                       ? load("ao", ColorSpace::Srgb)
+                       : Texture2D(Image{1, 1, 3, {255, 255, 255}}, ColorSpace::Srgb, filter);
+    return {std::move(albedo), std::move(normal), std::move(metallic), std::move(roughness),
+            std::move(ao)};
+}
+
+void PbrTextures::bind() const {
+    albedo.bind(0);
+    normal.bind(1);
+    metallic.bind(2);
+    roughness.bind(3);
+    ao.bind(4);
 }
 
 void Texture2D::bind(int unit) const {

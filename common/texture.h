@@ -1,6 +1,8 @@
 #pragma once
 // Textures on the GPU, each owning its GL name.
 #include <filesystem>
+#include <optional>
+#include <string>
 
 #include "gl.h"
 #include "image.h"
@@ -9,13 +11,19 @@ namespace pbr {
 
 enum class ColorSpace { Linear, Srgb };
 
+// Trilinear: mipmaps, linear within and between levels (what a sample wants). Nearest: level 0
+// only, no filtering, so a pixel shows exactly one texel (what a texel-exact test wants).
+enum class TextureFilter { Trilinear, Nearest };
+
 class Texture2D {
 public:
-    // Uploads an 8-bit image (1-4 channels), with mipmaps, repeat wrap and trilinear filtering.
-    // Srgb: colour data decoded to linear by the sampler (GL_SRGB8 / GL_SRGB8_ALPHA8).
-    Texture2D(const Image& image, ColorSpace colorSpace);
+    // Uploads an 8-bit image (1-4 channels; row 0 at t = 0), repeat wrap. Srgb: colour decoded
+    // to linear by the sampler (GL_SRGB8 / GL_SRGB8_ALPHA8; grey images are widened to RGB).
+    Texture2D(const Image& image, ColorSpace colorSpace,
+              TextureFilter filter = TextureFilter::Trilinear);
     // Loads a file; throws Error("<path>: <reason>").
-    static Texture2D load(const std::filesystem::path& path, ColorSpace colorSpace);
+    static Texture2D load(const std::filesystem::path& path, ColorSpace colorSpace,
+                          TextureFilter filter = TextureFilter::Trilinear);
 
     void bind(int unit) const;
     int width() const { return width_; }
@@ -25,5 +33,23 @@ private:
     GlTexture texture_;
     int width_ = 0, height_ = 0;
 };
+
+// A PBR material folder in the tutorial's layout: albedo, normal, metallic, roughness and ao,
+// each as .png (or .jpg / .jpeg). ao is optional (white when missing, as the text suggests);
+// any other missing map is an Error naming it. Maps may differ in size: each is sampled by uv.
+// albedo and ao are decoded from sRGB; normal, metallic and roughness are linear.
+struct PbrTextures {
+    Texture2D albedo, normal, metallic, roughness, ao;
+
+    // Binds albedo, normal, metallic, roughness, ao to texture units 0-4.
+    void bind() const;
+};
+PbrTextures loadPbrTextures(const std::filesystem::path& dir,
+                            TextureFilter filter = TextureFilter::Trilinear);
+
+// The file a map of a material folder comes from: <dir>/<name>.png, .jpg or .jpeg, whichever
+// exists; nullopt when none does.
+std::optional<std::filesystem::path> findMap(const std::filesystem::path& dir,
+                                             const std::string& name);
 
 }  // namespace pbr

@@ -9,6 +9,7 @@
 #include "app.h"
 #include "error.h"
 #include "mesh.h"
+#include "sphere_grid.h"
 
 int main(int argc, char** argv) try {
     pbr::App app(
@@ -18,12 +19,8 @@ int main(int argc, char** argv) try {
          .cameraPosition = {0.0f, 0.0f, 23.0f},  // the whole grid; the text starts at (0,0,3)
          .flags = {{"--lights", "N", "use the first N of the 4 point lights (default 4)"},
                    {"--roughness-offset", "D", "add D to every sphere's roughness (default 0)"}}});
-    const int lightCount =
-        app.flag("--lights") ? pbr::parseIntFlag("--lights", *app.flag("--lights"), 0, 4) : 4;
-    const float roughnessOffset =
-        app.flag("--roughness-offset")
-            ? pbr::parseFloatFlag("--roughness-offset", *app.flag("--roughness-offset"))
-            : 0.0f;
+    const int lightCount = app.flagInt("--lights", 0, 4, 4);
+    const float roughnessOffset = app.flagFloat("--roughness-offset", 0.0f);
 
     pbr::Shader& shader = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
@@ -45,9 +42,7 @@ int main(int argc, char** argv) try {
         shader.set("lightColors[" + std::to_string(i) + "]", lightColor);
     }
 
-    const int nrRows = 7;
-    const int nrColumns = 7;
-    const float spacing = 2.5f;
+    const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f};
 
     glEnable(GL_DEPTH_TEST);
     while (app.nextFrame()) {
@@ -59,29 +54,23 @@ int main(int argc, char** argv) try {
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
 
-        auto drawSphere = [&](const glm::mat4& model) {
-            shader.set("model", model);
-            shader.set("normalMatrix", glm::transpose(glm::inverse(glm::mat3(model))));
-            sphere.draw();
-        };
-
         // Metallic rises with the row (bottom row 0), roughness with the column; roughness is
         // kept at 0.05 or above, since a perfectly smooth sphere's point-light highlight vanishes.
-        for (int row = 0; row < nrRows; ++row) {
-            shader.set("metallic", float(row) / float(nrRows));
-            for (int col = 0; col < nrColumns; ++col) {
-                const float roughness = float(col) / float(nrColumns) + roughnessOffset;
+        for (int row = 0; row < grid.nrRows; ++row) {
+            shader.set("metallic", float(row) / float(grid.nrRows));
+            for (int col = 0; col < grid.nrColumns; ++col) {
+                const float roughness = float(col) / float(grid.nrColumns) + roughnessOffset;
                 shader.set("roughness", std::clamp(roughness, 0.05f, 1.0f));
-                drawSphere(glm::translate(glm::mat4(1.0f),
-                                          glm::vec3(float(col - nrColumns / 2) * spacing,
-                                                    float(row - nrRows / 2) * spacing, 0.0f)));
+                shader.setModel(grid.model(row, col));
+                sphere.draw();
             }
         }
 
         // The lights themselves, as small spheres in the same shader, so their places show.
         for (int i = 0; i < lightCount; ++i) {
-            drawSphere(glm::scale(glm::translate(glm::mat4(1.0f), lightPositions[size_t(i)]),
-                                  glm::vec3(0.5f)));
+            shader.setModel(glm::scale(glm::translate(glm::mat4(1.0f), lightPositions[size_t(i)]),
+                                       glm::vec3(0.5f)));
+            sphere.draw();
         }
     }
     return 0;

@@ -7,17 +7,13 @@
 #include <iterator>
 
 #include "context.h"
+#include "paths.h"
 #include "support/golden.h"
 
 namespace pbr::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string bytesOf(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 // A sample's headless run must succeed with zero GL errors reported.
 void expectCleanRun(const SampleRender& render) {
@@ -64,6 +60,28 @@ TEST_P(GoldenOnBackend, Lighting01MatchesGolden) {
     EXPECT_TRUE(matchesGolden("01_lighting", rendered));
 }
 
+TEST_P(GoldenOnBackend, LightingTextured02MatchesGolden) {
+    const SampleRender rendered = render("02_lighting_textured");
+    expectCleanRun(rendered);
+    expectNotBlank(readImage(rendered.image, 3), 0.1);  // dark iron lies close to the background
+    EXPECT_TRUE(matchesGolden("02_lighting_textured", rendered));
+}
+
+// The other four material sets, each on the tutorial's close-up view, at a small size.
+TEST_P(GoldenOnBackend, MaterialSetsMatchGoldens) {
+    for (const char* set : {"gold", "grass", "plastic", "wall"}) {
+        const SampleRender rendered =
+            render("02_lighting_textured", {"--material-dir", (materialDir() / set).string(),
+                                            "--size", "480x270", "--camera", "0,0,3"});
+        expectCleanRun(rendered);
+        expectNotBlank(readImage(rendered.image, 3), 0.3);
+        const fs::path kept = rendered.image.parent_path() / (std::string("02_") + set + ".png");
+        fs::rename(rendered.image, kept);
+        EXPECT_TRUE(matchesGolden(std::string("02_") + set,
+                                  {rendered.run, kept, rendered.backend, rendered.renderer}));
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, GoldenOnBackend, ::testing::ValuesIn(offscreenBackends()),
                          [](const auto& info) { return info.param; });
 
@@ -77,7 +95,7 @@ TEST(Golden, BackendsGiveTheSamePixels) {
         const SampleRender render = renderSample("01_lighting", dir / (backend + ".png"),
                                                  {"--size", "640x360", "--backend", backend});
         expectCleanRun(render);
-        const std::string bytes = bytesOf(render.image);
+        const std::string bytes = readBytes(render.image);
         ASSERT_FALSE(bytes.empty());
         if (first.empty())
             first = bytes;
@@ -108,16 +126,38 @@ TEST(Golden, GateRejectsSmallChanges) {
     EXPECT_FALSE(threeLights.pass) << "a missing light passed the gate: " << threeLights.summary;
 }
 
+// The sphere's own tangent frame and the text's screen-space one describe the same surface: the
+// pictures agree but for the derivative frame's per-quad steps (a flipped bitangent would put
+// about 9 % of the pixels off).
+TEST(Golden, TangentFramesAgree) {
+    const fs::path dir = testOutputDir("golden_tangent_frames");
+    const std::vector<std::string> view = {"--size", "640x360", "--camera", "0,0,3"};
+    auto with = [&](const std::string& frame) {
+        std::vector<std::string> args = view;
+        args.insert(args.end(), {"--tangent-frame", frame});
+        const SampleRender render =
+            renderSample("02_lighting_textured", dir / (frame + ".png"), args);
+        expectCleanRun(render);
+        return readImage(render.image, 3);
+    };
+    const ImageDiff diff = compareImages(with("mesh"), with("derivatives"), 2);
+    EXPECT_LT(diff.fractionOverThreshold, 0.005)
+        << "max " << diff.maxChannelDiff << ", PSNR " << diff.psnr;
+    EXPECT_GT(diff.psnr, 50.0);
+}
+
 TEST(Golden, HeadlessOutputIsBitIdentical) {
     const fs::path dir = testOutputDir("golden_determinism");
     const std::vector<std::string> args = {"--size", "640x360"};
-    const SampleRender first = renderSample("01_lighting", dir / "first.png", args);
-    const SampleRender second = renderSample("01_lighting", dir / "second.png", args);
-    expectCleanRun(first);
-    expectCleanRun(second);
-    const std::string a = bytesOf(first.image), b = bytesOf(second.image);
-    ASSERT_FALSE(a.empty());
-    EXPECT_TRUE(a == b) << "two headless renders differ in their bytes";
+    for (const std::string sample : {"01_lighting", "02_lighting_textured"}) {
+        const SampleRender first = renderSample(sample, dir / (sample + ".first.png"), args);
+        const SampleRender second = renderSample(sample, dir / (sample + ".second.png"), args);
+        expectCleanRun(first);
+        expectCleanRun(second);
+        const std::string a = readBytes(first.image), b = readBytes(second.image);
+        ASSERT_FALSE(a.empty());
+        EXPECT_TRUE(a == b) << sample << ": two headless renders differ in their bytes";
+    }
 }
 
 // Headless MSAA is real: with 4 samples the picture changes, and only at edges (where the

@@ -1,11 +1,12 @@
 // The GPU against an independent CPU evaluation of the same BRDF (common/brdf.cpp, GLM only).
-// For pixels on every sphere of sample 01 (rendered without MSAA) the ray through the pixel
+// For pixels on every sphere of the grid (rendered without MSAA) the ray through the pixel
 // centre is intersected with the analytic sphere, the surface is shaded on the CPU at the hit
 // point with the analytic normal, and the result must match the rendered pixel within 2/255.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cmath>
+#include <functional>
 #include <optional>
 
 #include "brdf.h"
@@ -16,93 +17,77 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The scene of sample 01, from SAMPLES.md (not from the sample's code).
+// The grid scene of samples 01 and 02, from SAMPLES.md (not from the samples' code).
 constexpr int kWidth = 1280, kHeight = 720;
 constexpr double kFovY = 45.0 * M_PI / 180.0;
 const glm::dvec3 kCamera(0.0, 0.0, 23.0);  // the default camera, yaw -90 (looking down -Z)
-const std::array<cpu::PointLight, 4> kLights = {{
-    {{-10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-    {{10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-    {{-10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-    {{10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-}};
 
 glm::dvec3 sphereCentre(int row, int col) {
     return {(col - 3) * 2.5, (row - 3) * 2.5, 0.0};
 }
 
-// Ray through a point of the image (x right, y down, in pixels; +0.5 is a pixel centre).
-glm::dvec3 rayDirection(double x, double y) {
-    const double ndcX = 2.0 * x / kWidth - 1.0;
-    const double ndcY = 1.0 - 2.0 * y / kHeight;
-    const double t = std::tan(kFovY / 2.0);
-    return glm::normalize(glm::dvec3(ndcX * t * kWidth / kHeight, ndcY * t, -1.0));
-}
+struct Hit {
+    glm::dvec3 position, normal;
+    double ndotv;
+};
 
-// The 8-bit colour the CPU predicts for image point (x, y) on sphere (row, col), if the ray hits.
-std::optional<glm::dvec3> predict(double x, double y, int row, int col, double* ndotv = nullptr) {
-    const glm::dvec3 dir = rayDirection(x, y);
+// The ray through image point (x right, y down, in pixels; +0.5 is a pixel centre) against the
+// unit sphere of grid cell (row, col).
+std::optional<Hit> hitSphere(double x, double y, int row, int col) {
+    const double t = std::tan(kFovY / 2.0);
+    const glm::dvec3 dir = glm::normalize(glm::dvec3(
+        (2.0 * x / kWidth - 1.0) * t * kWidth / kHeight, (1.0 - 2.0 * y / kHeight) * t, -1.0));
     const glm::dvec3 oc = kCamera - sphereCentre(row, col);
     const double b = glm::dot(oc, dir);
     const double disc = b * b - (glm::dot(oc, oc) - 1.0);
     if (disc <= 0.0) return std::nullopt;
-    const glm::dvec3 hit = kCamera + (-b - std::sqrt(disc)) * dir;
-    const glm::dvec3 normal = glm::normalize(hit - sphereCentre(row, col));
-    if (ndotv) *ndotv = -glm::dot(normal, dir);
-    cpu::SurfacePoint surface;
-    surface.position = glm::vec3(hit);
-    surface.normal = glm::vec3(normal);
-    surface.albedo = {0.5f, 0.0f, 0.0f};
-    surface.metallic = float(row) / 7.0f;
-    surface.roughness = std::clamp(float(col) / 7.0f, 0.05f, 1.0f);
-    surface.ao = 1.0f;
-    const glm::vec3 color =
-        cpu::reinhardGamma(cpu::shadePointLights(surface, glm::vec3(kCamera), kLights));
-    return glm::dvec3(color) * 255.0;
+    Hit hit;
+    hit.position = kCamera + (-b - std::sqrt(disc)) * dir;
+    hit.normal = glm::normalize(hit.position - sphereCentre(row, col));
+    hit.ndotv = -glm::dot(hit.normal, dir);
+    return hit;
 }
 
-TEST(Reference, EverySphereMatchesTheCpuBrdf) {
-    const fs::path dir = testOutputDir("reference_01");
-    const SampleRender render =
-        renderSample("01_lighting", dir / "01_lighting_nomsaa.png", {"--msaa", "0"});
-    ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
-    const Image image = readImage(render.image, 3);
-    ASSERT_EQ(image.width, kWidth);
-    ASSERT_EQ(image.height, kHeight);
+// What the CPU predicts (0..255 per channel) at an image point on sphere (row, col); nullopt
+// where the point must not be compared (off the sphere, near the rim, or ambiguous).
+using Predictor = std::function<std::optional<glm::dvec3>(double x, double y, int row, int col)>;
 
-    int checked = 0, skippedSteep = 0;
+struct Comparison {
+    int checked = 0, skipped = 0;
     double worst = 0.0;
+};
+
+// Walks a grid of pixels around each sphere's centre and compares those the predictor accepts
+// and whose prediction is steady a quarter pixel away (not on a pin-point highlight, where the
+// tessellated sphere's normal cannot match the analytic one).
+Comparison compareGrid(const Image& image, const Predictor& predict) {
+    Comparison result;
+    const double t = std::tan(kFovY / 2.0);
     for (int row = 0; row < 7; ++row) {
         for (int col = 0; col < 7; ++col) {
-            // The sphere's centre in the image, and a grid of pixels around it.
             const glm::dvec3 c = sphereCentre(row, col);
-            const double t = std::tan(kFovY / 2.0);
             const double cx = (c.x / (kCamera.z * t * kWidth / kHeight) + 1.0) / 2.0 * kWidth;
             const double cy = (1.0 - c.y / (kCamera.z * t)) / 2.0 * kHeight;
             int checkedHere = 0;
-            for (int dy = -24; dy <= 24; dy += 6) {
-                for (int dx = -24; dx <= 24; dx += 6) {
+            for (int dy = -24; dy <= 24; dy += 4) {
+                for (int dx = -24; dx <= 24; dx += 4) {
                     const int px = int(std::floor(cx)) + dx, py = int(std::floor(cy)) + dy;
-                    double ndotv = 0.0;
-                    const auto expected = predict(px + 0.5, py + 0.5, row, col, &ndotv);
-                    if (!expected || ndotv < 0.5) continue;  // off the sphere or near its rim
-                    // Compare only where the shading is smooth at pixel scale: a quarter pixel
-                    // away it must change by less than one level (not on a pin-point highlight,
-                    // where the tessellated sphere's normal cannot match the analytic one).
-                    bool smooth = true;
+                    const auto expected = predict(px + 0.5, py + 0.5, row, col);
+                    if (!expected) continue;
+                    bool steady = true;
                     for (auto [ox, oy] :
                          {std::pair{0.25, 0.0}, {-0.25, 0.0}, {0.0, 0.25}, {0.0, -0.25}}) {
                         const auto near = predict(px + 0.5 + ox, py + 0.5 + oy, row, col);
-                        if (!near || glm::length(*near - *expected) > 1.0) smooth = false;
+                        if (!near || glm::length(*near - *expected) > 1.0) steady = false;
                     }
-                    if (!smooth) {
-                        ++skippedSteep;
+                    if (!steady) {
+                        ++result.skipped;
                         continue;
                     }
                     for (int ch = 0; ch < 3; ++ch) {
                         const double rendered = image.at(px, py, ch);
                         const double diff = std::abs(rendered - std::round((*expected)[ch]));
-                        worst = std::max(worst, diff);
+                        result.worst = std::max(result.worst, diff);
                         EXPECT_LE(diff, 2.0)
                             << "sphere row " << row << " col " << col << " pixel (" << px << ", "
                             << py << ") channel " << ch << ": rendered " << rendered << ", CPU "
@@ -113,14 +98,139 @@ TEST(Reference, EverySphereMatchesTheCpuBrdf) {
             }
             EXPECT_GE(checkedHere, 1)
                 << "no comparable pixel on sphere row " << row << " col " << col;
-            checked += checkedHere;
+            result.checked += checkedHere;
         }
     }
+    return result;
+}
+
+glm::dvec3 toBytes(const glm::vec3& linear) {
+    return glm::dvec3(cpu::reinhardGamma(linear)) * 255.0;
+}
+
+TEST(Reference, Lighting01EverySphereMatchesTheCpuBrdf) {
+    const fs::path dir = testOutputDir("reference_01");
+    const SampleRender render =
+        renderSample("01_lighting", dir / "01_lighting_nomsaa.png", {"--msaa", "0"});
+    ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+    const Image image = readImage(render.image, 3);
+    ASSERT_EQ(image.width, kWidth);
+
+    const std::array<cpu::PointLight, 4> lights = {{
+        {{-10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
+        {{10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
+        {{-10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
+        {{10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
+    }};
+    const Comparison result =
+        compareGrid(image, [&](double x, double y, int row, int col) -> std::optional<glm::dvec3> {
+            const auto hit = hitSphere(x, y, row, col);
+            if (!hit || hit->ndotv < 0.5) return std::nullopt;
+            cpu::SurfacePoint surface;
+            surface.position = glm::vec3(hit->position);
+            surface.normal = glm::vec3(hit->normal);
+            surface.albedo = {0.5f, 0.0f, 0.0f};
+            surface.metallic = float(row) / 7.0f;
+            surface.roughness = std::clamp(float(col) / 7.0f, 0.05f, 1.0f);
+            surface.ao = 1.0f;
+            return toBytes(cpu::shadePointLights(surface, glm::vec3(kCamera), lights));
+        });
     std::printf(
         "compared %d pixels on 49 spheres (skipped %d on steep highlights); worst channel diff "
         "%.0f/255\n",
-        checked, skippedSteep, worst);
-    EXPECT_GE(checked, 49 * 20);
+        result.checked, result.skipped, result.worst);
+    EXPECT_GE(result.checked, 49 * 20);
+}
+
+// 02 with texel lookups: a 64 x 64 material of random texels, drawn with nearest filtering
+// (--filter nearest: mip level 0, one texel a pixel), so the CPU can read the very texel the GPU
+// reads at the hit point's uv. Pixels whose uv lies within 0.15 texel of a texel edge are not
+// compared: there the tessellated sphere's interpolated uv may fall in the neighbouring texel.
+TEST(Reference, LightingTextured02MatchesTheCpuBrdfWithTexels) {
+    const fs::path dir = testOutputDir("reference_02");
+    constexpr int kTexels = 64;
+    // random texels in plausible ranges
+    auto random = [](int x, int y, int channel) {
+        std::uint32_t h = std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u ^
+                          std::uint32_t(channel) * 83492791u;
+        h ^= h >> 13;
+        h *= 0x5bd1e995u;
+        h ^= h >> 15;
+        return float(h & 0xffff) / 65535.0f;
+    };
+    Image albedo{kTexels, kTexels, 3, {}}, normal{kTexels, kTexels, 3, {}},
+        metallic{kTexels, kTexels, 1, {}}, roughness{kTexels, kTexels, 1, {}},
+        ao{kTexels, kTexels, 1, {}};
+    for (int y = 0; y < kTexels; ++y) {
+        for (int x = 0; x < kTexels; ++x) {
+            for (int c = 0; c < 3; ++c)
+                albedo.pixels.push_back(std::uint8_t(40 + 200 * random(x, y, c)));
+            const glm::vec3 n = glm::normalize(
+                glm::vec3(0.5f * random(x, y, 3) - 0.25f, 0.5f * random(x, y, 4) - 0.25f, 1.0f));
+            for (int c = 0; c < 3; ++c)
+                normal.pixels.push_back(std::uint8_t(std::lround((n[c] * 0.5f + 0.5f) * 255.0f)));
+            metallic.pixels.push_back(std::uint8_t(255 * random(x, y, 5)));
+            roughness.pixels.push_back(std::uint8_t(50 + 205 * random(x, y, 6)));
+            ao.pixels.push_back(std::uint8_t(128 + 127 * random(x, y, 7)));
+        }
+    }
+    const fs::path set = dir / "random_texels";
+    writePng(set / "albedo.png", albedo);
+    writePng(set / "normal.png", normal);
+    writePng(set / "metallic.png", metallic);
+    writePng(set / "roughness.png", roughness);
+    writePng(set / "ao.png", ao);
+
+    const SampleRender render =
+        renderSample("02_lighting_textured", dir / "02_nearest.png",
+                     {"--msaa", "0", "--filter", "nearest", "--material-dir", set.string()});
+    ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+    const Image image = readImage(render.image, 3);
+
+    auto srgbToLinear = [](std::uint8_t byte) {
+        const double c = byte / 255.0;
+        return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+    };
+    const cpu::PointLight light{{0.0f, 0.0f, 10.0f}, {150.0f, 150.0f, 150.0f}};
+    const Comparison result =
+        compareGrid(image, [&](double x, double y, int row, int col) -> std::optional<glm::dvec3> {
+            const auto hit = hitSphere(x, y, row, col);
+            if (!hit || hit->ndotv < 0.5) return std::nullopt;
+            // uv of the analytic sphere, as the mesh defines it: u around from +X towards +Z, v
+            // from the north pole
+            const glm::dvec3 n = hit->normal;
+            double phi = std::atan2(n.z, n.x);
+            if (phi < 0.0) phi += 2.0 * M_PI;
+            const double u = phi / (2.0 * M_PI), v = std::acos(std::clamp(n.y, -1.0, 1.0)) / M_PI;
+            const double tx = u * kTexels, ty = v * kTexels;
+            const double fx = tx - std::floor(tx), fy = ty - std::floor(ty);
+            if (fx < 0.15 || fx > 0.85 || fy < 0.15 || fy > 0.85) return std::nullopt;
+            const int texelX = int(tx) % kTexels, texelY = std::min(int(ty), kTexels - 1);
+
+            // tangent frame: T along +u, B = w * cross(N, T) with w = -1 (towards the image's top)
+            const glm::vec3 N = glm::vec3(n);
+            const glm::vec3 T =
+                glm::normalize(glm::vec3(float(-std::sin(phi)), 0.0f, float(std::cos(phi))));
+            const glm::vec3 B = -glm::cross(N, T);
+            const glm::vec3 tangentNormal(normal.at(texelX, texelY, 0) / 255.0f * 2.0f - 1.0f,
+                                          normal.at(texelX, texelY, 1) / 255.0f * 2.0f - 1.0f,
+                                          normal.at(texelX, texelY, 2) / 255.0f * 2.0f - 1.0f);
+            cpu::SurfacePoint surface;
+            surface.position = glm::vec3(hit->position);
+            surface.normal =
+                glm::normalize(T * tangentNormal.x + B * tangentNormal.y + N * tangentNormal.z);
+            surface.albedo = {srgbToLinear(albedo.at(texelX, texelY, 0)),
+                              srgbToLinear(albedo.at(texelX, texelY, 1)),
+                              srgbToLinear(albedo.at(texelX, texelY, 2))};
+            surface.metallic = metallic.at(texelX, texelY, 0) / 255.0f;
+            surface.roughness = roughness.at(texelX, texelY, 0) / 255.0f;
+            surface.ao = srgbToLinear(ao.at(texelX, texelY, 0));
+            return toBytes(
+                cpu::shadePointLights(surface, glm::vec3(kCamera), std::span(&light, 1)));
+        });
+    std::printf("compared %d pixels on 49 spheres (skipped %d); worst channel diff %.0f/255\n",
+                result.checked, result.skipped, result.worst);
+    EXPECT_GE(result.checked, 49 * 20);
 }
 
 }  // namespace

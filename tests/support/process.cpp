@@ -32,14 +32,12 @@ fs::path testOutputDir(const std::string& name) {
     return dir;
 }
 
-namespace {
-std::string slurp(const fs::path& path) {
+std::string readBytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
 }
-}  // namespace
 
 RunResult runSample(std::vector<std::string> argv, const RunOptions& options) {
     if (argv.empty()) throw std::invalid_argument("runSample: empty argv");
@@ -74,8 +72,8 @@ RunResult runSample(std::vector<std::string> argv, const RunOptions& options) {
     close(errFd);
     RunResult result;
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.out = slurp(outName);
-    result.err = slurp(errName);
+    result.out = readBytes(outName);
+    result.err = readBytes(errName);
     fs::remove(outName);
     fs::remove(errName);
     return result;

@@ -27,6 +27,9 @@ RunResult runSample(std::vector<std::string> argv, const RunOptions& options = {
 // A fresh, empty folder under the build's test-output/ for one test.
 std::filesystem::path testOutputDir(const std::string& name);
 
+// A file's bytes ("" when it cannot be read).
+std::string readBytes(const std::filesystem::path& path);
+
 // The full path of a sample executable.
 std::filesystem::path sampleExecutable(const std::string& name);
 

@@ -54,12 +54,13 @@ TEST(Sphere, TangentsAreUnitOrthogonalAndFollowTheUvs) {
             EXPECT_NEAR(glm::dot(t, n), 0.0f, 1e-5f);
             EXPECT_EQ(std::abs(sphere.tangents[i].w), 1.0f);
             if (y == 0 || y == 64 || x == 64) continue;  // finite differences need neighbours
-            // The tangent points the way u grows, w * cross(N, T) the way v grows.
+            // The tangent points the way u grows; w * cross(N, T) to the image's top, which is
+            // the way v shrinks (row 0 of the image lies at v = 0).
             const glm::vec3 dPdu = sphere.positions[i + 1] - sphere.positions[i];
             const glm::vec3 dPdv = sphere.positions[i + 65] - sphere.positions[i];
             EXPECT_GT(glm::dot(t, glm::normalize(dPdu)), 0.99f);
             const glm::vec3 bitangent = sphere.tangents[i].w * glm::cross(n, t);
-            EXPECT_GT(glm::dot(bitangent, glm::normalize(dPdv)), 0.99f);
+            EXPECT_GT(glm::dot(bitangent, -glm::normalize(dPdv)), 0.99f);
         }
     }
 }
@@ -114,6 +115,17 @@ TEST(Cube, TwentyFourVerticesFacingOutward) {
     EXPECT_EQ(box.positions.size(), 24u);
     EXPECT_EQ(box.indices.size(), 36u);
     expectClosedOutwardMesh(box);
+    // Textures stand upright: on every face the bitangent points from v = 1 to v = 0.
+    for (size_t face = 0; face < 6; ++face) {
+        const size_t bottomLeft = face * 4, topLeft = face * 4 + 3;
+        EXPECT_FLOAT_EQ(box.uvs[bottomLeft].y, 1.0f);
+        EXPECT_FLOAT_EQ(box.uvs[topLeft].y, 0.0f);
+        const glm::vec3 up = box.positions[topLeft] - box.positions[bottomLeft];
+        const glm::vec3 bitangent =
+            box.tangents[bottomLeft].w *
+            glm::cross(box.normals[bottomLeft], glm::vec3(box.tangents[bottomLeft]));
+        EXPECT_GT(glm::dot(glm::normalize(up), bitangent), 0.99f);
+    }
     for (size_t i = 0; i < box.positions.size(); ++i) {
         // each vertex lies on the face its normal names
         EXPECT_FLOAT_EQ(glm::dot(box.positions[i], box.normals[i]), 1.0f);

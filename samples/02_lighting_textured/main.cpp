@@ -1,0 +1,67 @@
+// 02 lighting_textured: LearnOpenGL "PBR / Lighting", textured. The 7 x 7 grid again, every
+// sphere in the same material from five maps (rusted iron, made by the project), one light.
+// See README.md beside this file.
+#include "app.h"
+#include "error.h"
+#include "mesh.h"
+#include "paths.h"
+#include "sphere_grid.h"
+#include "texture.h"
+
+int main(int argc, char** argv) try {
+    pbr::App app(
+        argc, argv,
+        {.name = "02_lighting_textured",
+         .title = "02 lighting textured: rusted iron from five maps",
+         .cameraPosition = {0.0f, 0.0f, 23.0f},
+         .flags = {{"--material-dir", "DIR",
+                    "a folder with albedo, normal, metallic, roughness (and ao) .png/.jpg"},
+                   {"--tangent-frame", "mesh|derivatives",
+                    "tangents from the sphere (default) or from screen-space derivatives"},
+                   {"--filter", "trilinear|nearest", "texture filtering (default trilinear)"}}});
+    const std::string frame = app.flagChoice("--tangent-frame", {"mesh", "derivatives"});
+    const std::string filter = app.flagChoice("--filter", {"trilinear", "nearest"});
+
+    pbr::Shader& shader =
+        app.shader("02_lighting_textured/pbr.vert", "02_lighting_textured/pbr.frag");
+    const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
+    const pbr::PbrTextures material = pbr::loadPbrTextures(
+        app.flag("--material-dir").value_or((pbr::materialDir() / "rusted_iron").string()),
+        filter == "nearest" ? pbr::TextureFilter::Nearest : pbr::TextureFilter::Trilinear);
+
+    shader.set("albedoMap", 0);
+    shader.set("normalMap", 1);
+    shader.set("metallicMap", 2);
+    shader.set("roughnessMap", 3);
+    shader.set("aoMap", 4);
+    shader.set("useDerivativeTangents", frame == "derivatives" ? 1 : 0);
+
+    // One light in front of the grid, set before the first frame.
+    shader.set("lightCount", 1);
+    shader.set("lightPositions[0]", glm::vec3(0.0f, 0.0f, 10.0f));
+    shader.set("lightColors[0]", glm::vec3(150.0f, 150.0f, 150.0f));
+
+    const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f};
+
+    glEnable(GL_DEPTH_TEST);
+    while (app.nextFrame()) {
+        glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+        shader.use();
+        shader.set("projection", app.projection());
+        shader.set("view", app.view());
+        shader.set("camPos", app.camera().position());
+        material.bind();
+
+        for (int row = 0; row < grid.nrRows; ++row) {
+            for (int col = 0; col < grid.nrColumns; ++col) {
+                shader.setModel(grid.model(row, col));
+                sphere.draw();
+            }
+        }
+    }
+    return 0;
+} catch (...) {
+    return pbr::reportFailure();
+}
