@@ -57,6 +57,11 @@ public:
     float flagFloat(const std::string& name, float fallback) const;
 
     FlyCamera& camera() { return camera_; }
+    // A start pose found after the App was made (framing a model, say); --camera still wins.
+    void setDefaultCamera(const glm::vec3& position, float yaw = FlyCamera::kDefaultYaw,
+                          float pitch = FlyCamera::kDefaultPitch) {
+        if (!options_.camera) camera_ = FlyCamera(position, yaw, pitch);
+    }
     glm::mat4 view() const { return camera_.viewMatrix(); }
     glm::mat4 projection() const { return camera_.projectionMatrix(aspect()); }
 

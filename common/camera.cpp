@@ -58,4 +58,19 @@ void FlyCamera::updateVectors() {
     up_ = glm::normalize(glm::cross(right_, front_));
 }
 
+Framing frameBounds(const glm::vec3& boundsMin, const glm::vec3& boundsMax, float fovYDegrees,
+                    float aspect) {
+    const glm::vec3 centre = 0.5f * (boundsMin + boundsMax);
+    const float radius = std::max(0.5f * glm::length(boundsMax - boundsMin), 1e-6f);
+    // the narrower of the two fields of view decides; 10 % margin
+    const float halfFovY = glm::radians(fovYDegrees) * 0.5f;
+    const float halfFovX = std::atan(std::tan(halfFovY) * aspect);
+    const float distance = 1.1f / std::sin(std::min(halfFovY, halfFovX));
+    Framing framing;
+    framing.normalize = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f / radius)) *
+                        glm::translate(glm::mat4(1.0f), -centre);
+    framing.cameraPosition = {0.0f, 0.0f, distance};
+    return framing;
+}
+
 }  // namespace pbr

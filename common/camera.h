@@ -51,4 +51,14 @@ private:
     float zoom_ = kDefaultZoom;
 };
 
+// Frames a model: `normalize` moves its bounding box's centre to the origin and scales its
+// bounding sphere to radius 1; a camera at `cameraPosition` (yaw -90, pitch 0) then sees the whole
+// sphere with a margin, at any aspect, within the fly camera's near and far planes.
+struct Framing {
+    glm::mat4 normalize;
+    glm::vec3 cameraPosition;
+};
+Framing frameBounds(const glm::vec3& boundsMin, const glm::vec3& boundsMax, float fovYDegrees,
+                    float aspect);
+
 }  // namespace pbr

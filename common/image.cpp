@@ -39,6 +39,24 @@ Image readImage(const fs::path& path, int wantChannels) {
     return image;
 }
 
+Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& what,
+                  int wantChannels) {
+    if (bytes.empty()) throw Error(what + ": empty image");
+    int width = 0, height = 0, channels = 0;
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(
+        stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels,
+                              wantChannels),
+        stbi_image_free);
+    if (!data) {
+        const char* reason = stbi_failure_reason();
+        throw Error(what + ": cannot decode image (" + (reason ? reason : "unknown reason") + ")");
+    }
+    Image image{width, height, wantChannels ? wantChannels : channels, {}};
+    image.pixels.assign(data.get(),
+                        data.get() + size_t(width) * size_t(height) * size_t(image.channels));
+    return image;
+}
+
 void writePng(const fs::path& path, const Image& image) {
     if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 ||
         image.pixels.size() !=

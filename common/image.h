@@ -3,6 +3,7 @@
 // golden tests use. No OpenGL. Rows are stored top row first, as in a PNG file.
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace pbr {
@@ -21,6 +22,9 @@ struct Image {
 // Reads a PNG (or any format stb_image decodes) as 8-bit; channels = what the file has, or
 // `wantChannels` when non-zero. Throws Error("<path>: <reason>").
 Image readImage(const std::filesystem::path& path, int wantChannels = 0);
+// Decodes an image file's bytes held in memory; `what` names it in the error.
+Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& what,
+                  int wantChannels = 0);
 // Writes an 8-bit PNG (same bytes for the same pixels). Throws Error("<path>: <reason>").
 void writePng(const std::filesystem::path& path, const Image& image);
 // The image with its rows in the opposite order (GL reads bottom row first).

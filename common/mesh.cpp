@@ -120,22 +120,25 @@ GpuMesh::GpuMesh(const MeshData& data)
     : indexCount_(GLsizei(data.indices.size())),
       mode_(data.primitive == Primitive::TriangleStrip ? GL_TRIANGLE_STRIP : GL_TRIANGLES) {
     const size_t count = data.positions.size();
-    if (data.normals.size() != count || data.uvs.size() != count || data.tangents.size() != count) {
+    if (data.normals.size() != count || data.uvs.size() != count || data.tangents.size() != count ||
+        (!data.colors.empty() && data.colors.size() != count)) {
         throw Error("GpuMesh: attribute arrays differ in length");
     }
     for (std::uint32_t index : data.indices) {
         if (index >= count) throw Error("GpuMesh: index out of range");
     }
-    // Interleaved: position, uv, normal, tangent (12 floats a vertex).
+    // Interleaved: position, uv, normal, tangent, colour (16 floats a vertex).
     struct Vertex {
         glm::vec3 position;
         glm::vec2 uv;
         glm::vec3 normal;
         glm::vec4 tangent;
+        glm::vec4 color;
     };
     std::vector<Vertex> vertices(count);
     for (size_t i = 0; i < count; ++i) {
-        vertices[i] = {data.positions[i], data.uvs[i], data.normals[i], data.tangents[i]};
+        const glm::vec4 color = data.colors.empty() ? glm::vec4(1.0f) : data.colors[i];
+        vertices[i] = {data.positions[i], data.uvs[i], data.normals[i], data.tangents[i], color};
     }
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
@@ -153,6 +156,7 @@ GpuMesh::GpuMesh(const MeshData& data)
     attribute(kAttribUv, 2, offsetof(Vertex, uv));
     attribute(kAttribNormal, 3, offsetof(Vertex, normal));
     attribute(kAttribTangent, 4, offsetof(Vertex, tangent));
+    attribute(kAttribColor, 4, offsetof(Vertex, color));
     glBindVertexArray(0);
 }
 

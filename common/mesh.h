@@ -21,6 +21,7 @@ struct MeshData {
     // surface, the way the green channel of an OpenGL-convention (+Y) normal map points. The suite
     // uploads images top row first (row 0 at v = 0), as the tutorial does.
     std::vector<glm::vec4> tangents;
+    std::vector<glm::vec4> colors;  // linear RGBA per vertex; empty means white
     std::vector<std::uint32_t> indices;
     Primitive primitive = Primitive::Triangles;
 };
@@ -46,6 +47,7 @@ enum VertexAttribute : GLuint {
     kAttribUv = 1,
     kAttribNormal = 2,
     kAttribTangent = 3,
+    kAttribColor = 4,
 };
 
 class GpuMesh {

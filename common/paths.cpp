@@ -28,6 +28,9 @@ fs::path resourceDir() {
 fs::path materialDir() {
     return fromEnvOr("PBR_MATERIAL_DIR", PBR_MATERIAL_DIR);
 }
+fs::path modelDir() {
+    return fromEnvOr("PBR_MODEL_DIR", PBR_MODEL_DIR);
+}
 
 std::string displayPath(const fs::path& path) {
     std::error_code ec;

@@ -11,6 +11,8 @@ std::filesystem::path shaderDir();
 std::filesystem::path resourceDir();
 // The material sets the build bakes (build/.../resources/materials), or $PBR_MATERIAL_DIR.
 std::filesystem::path materialDir();
+// The models the build writes (build/.../resources/models), or $PBR_MODEL_DIR.
+std::filesystem::path modelDir();
 // A path as a user wants to read it in a message: relative to the working directory when it lies
 // below it, absolute otherwise.
 std::string displayPath(const std::filesystem::path& path);

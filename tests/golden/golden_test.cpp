@@ -82,6 +82,38 @@ TEST_P(GoldenOnBackend, MaterialSetsMatchGoldens) {
     }
 }
 
+TEST_P(GoldenOnBackend, GltfUnlit03MatchesGolden) {
+    const SampleRender rendered = render("03_gltf_unlit");
+    expectCleanRun(rendered);
+    expectNotBlank(readImage(rendered.image, 3), 0.05);
+    EXPECT_TRUE(matchesGolden("03_gltf_unlit", rendered));
+}
+
+// BoxTextured as .gltf with a .bin and a .png beside it, as .glb, and as .gltf with everything
+// embedded in base64: one picture, one golden.
+TEST_P(GoldenOnBackend, BoxTexturedInEveryFormMatchesOneGolden) {
+    const fs::path models = "/usr/share/assimp/models/glTF2";
+    std::string first;
+    for (const char* file :
+         {"BoxTextured-glTF/BoxTextured.gltf", "BoxTextured-glTF-Binary/BoxTextured.glb",
+          "BoxTextured-glTF-Embedded/BoxTextured.gltf"}) {
+        const SampleRender rendered =
+            render("03_gltf_unlit", {"--model", (models / file).string(), "--size", "480x270"});
+        expectCleanRun(rendered);
+        const std::string bytes = readBytes(rendered.image);
+        if (first.empty()) {
+            first = bytes;
+            expectNotBlank(readImage(rendered.image, 3), 0.1);
+            const fs::path kept = rendered.image.parent_path() / "03_box_textured.png";
+            fs::copy_file(rendered.image, kept, fs::copy_options::overwrite_existing);
+            EXPECT_TRUE(matchesGolden("03_box_textured",
+                                      {rendered.run, kept, rendered.backend, rendered.renderer}));
+        } else {
+            EXPECT_TRUE(bytes == first) << file << " draws differently from BoxTextured.gltf";
+        }
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, GoldenOnBackend, ::testing::ValuesIn(offscreenBackends()),
                          [](const auto& info) { return info.param; });
 
@@ -126,6 +158,21 @@ TEST(Golden, GateRejectsSmallChanges) {
     EXPECT_FALSE(threeLights.pass) << "a missing light passed the gate: " << threeLights.summary;
 }
 
+// Files written by others render: not blank, no GL error.
+TEST(Golden, RealGltfFilesRender) {
+    const fs::path dir = testOutputDir("golden_real_gltf");
+    const fs::path models = "/usr/share/assimp/models/glTF2";
+    for (const char* file :
+         {"2CylinderEngine-glTF-Binary/2CylinderEngine.glb", "ClearCoat-glTF/ClearCoatTest.gltf",
+          "BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf"}) {
+        const SampleRender render =
+            renderSample("03_gltf_unlit", dir / (fs::path(file).stem().string() + ".png"),
+                         {"--model", (models / file).string(), "--size", "480x270"});
+        expectCleanRun(render);
+        expectNotBlank(readImage(render.image, 3), 0.02);
+    }
+}
+
 // The sphere's own tangent frame and the text's screen-space one describe the same surface: the
 // pictures agree but for the derivative frame's per-quad steps (a flipped bitangent would put
 // about 9 % of the pixels off).
@@ -149,7 +196,7 @@ TEST(Golden, TangentFramesAgree) {
 TEST(Golden, HeadlessOutputIsBitIdentical) {
     const fs::path dir = testOutputDir("golden_determinism");
     const std::vector<std::string> args = {"--size", "640x360"};
-    for (const std::string sample : {"01_lighting", "02_lighting_textured"}) {
+    for (const std::string sample : {"01_lighting", "02_lighting_textured", "03_gltf_unlit"}) {
         const SampleRender first = renderSample(sample, dir / (sample + ".first.png"), args);
         const SampleRender second = renderSample(sample, dir / (sample + ".second.png"), args);
         expectCleanRun(first);

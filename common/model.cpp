@@ -1,0 +1,302 @@
+#include "model.h"
+
+#include <assimp/GltfMaterial.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <stb_image.h>
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <functional>
+#include <set>
+
+#include "error.h"
+#include "paths.h"
+
+namespace pbr {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+glm::mat4 toGlm(const aiMatrix4x4& m) {
+    // Assimp is row-major, GLM column-major
+    return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4,
+                     m.b4, m.c4, m.d4);
+}
+
+struct Reader {
+    const aiScene* scene;
+    Model& model;
+    std::string where;  // "<file>: "
+
+    TextureRef texture(const aiMaterial* material, aiTextureType type) {
+        TextureRef ref;
+        aiString path;
+        unsigned uvIndex = 0;
+        if (material->GetTextureCount(type) == 0 ||
+            material->GetTexture(type, 0, &path, nullptr, &uvIndex) != AI_SUCCESS) {
+            return ref;
+        }
+        ref.uvSet = int(uvIndex);
+        const std::string name = path.C_Str();
+        if (!name.empty() && name[0] == '*') {
+            const int index = std::atoi(name.c_str() + 1);
+            if (index < 0 || index >= int(scene->mNumTextures)) {
+                throw Error(where + "texture '" + name + "' is not in the file");
+            }
+            ref.embedded = index;
+            return ref;
+        }
+        if (const aiTexture* embedded = scene->GetEmbeddedTexture(name.c_str())) {
+            for (unsigned i = 0; i < scene->mNumTextures; ++i) {
+                if (scene->mTextures[i] == embedded) ref.embedded = int(i);
+            }
+            return ref;
+        }
+        ref.file = model.file.parent_path() / name;
+        std::error_code ec;
+        if (!fs::is_regular_file(ref.file, ec)) {
+            throw Error(where + "texture '" + name + "' not found (" + displayPath(ref.file) + ")");
+        }
+        return ref;
+    }
+
+    Material material(const aiMaterial* m) {
+        Material out;
+        out.name = m->GetName().C_Str();
+        int shading = 0;
+        if (m->Get(AI_MATKEY_SHADING_MODEL, shading) == AI_SUCCESS)
+            out.unlit = shading == aiShadingMode_Unlit;
+        aiColor4D color;
+        if (m->Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
+            m->Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
+            out.baseColorFactor = {color.r, color.g, color.b, color.a};
+        }
+        out.baseColorTexture = texture(m, aiTextureType_BASE_COLOR);
+        if (!out.baseColorTexture.present())
+            out.baseColorTexture = texture(m, aiTextureType_DIFFUSE);
+        m->Get(AI_MATKEY_METALLIC_FACTOR, out.metallicFactor);
+        m->Get(AI_MATKEY_ROUGHNESS_FACTOR, out.roughnessFactor);
+        out.metallicRoughnessTexture = texture(m, aiTextureType_UNKNOWN);
+        out.normalTexture = texture(m, aiTextureType_NORMALS);
+        m->Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), out.normalScale);
+        out.occlusionTexture = texture(m, aiTextureType_LIGHTMAP);
+        m->Get(AI_MATKEY_GLTF_TEXTURE_STRENGTH(aiTextureType_LIGHTMAP, 0), out.occlusionStrength);
+        out.emissiveTexture = texture(m, aiTextureType_EMISSIVE);
+        aiColor3D emissive;
+        if (m->Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS) {
+            out.emissiveFactor = {emissive.r, emissive.g, emissive.b};
+        }
+        if (m->Get(AI_MATKEY_GLOSSINESS_FACTOR, out.glossinessFactor) == AI_SUCCESS) {
+            out.specularGlossiness = true;
+            aiColor3D specular;
+            if (m->Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) {
+                out.specularFactor = {specular.r, specular.g, specular.b};
+            }
+            out.specularGlossinessTexture = texture(m, aiTextureType_SPECULAR);
+        }
+        aiString alphaMode;
+        if (m->Get(AI_MATKEY_GLTF_ALPHAMODE, alphaMode) == AI_SUCCESS) {
+            const std::string mode = alphaMode.C_Str();
+            out.alphaMode = mode == "MASK"    ? AlphaMode::Mask
+                            : mode == "BLEND" ? AlphaMode::Blend
+                                              : AlphaMode::Opaque;
+        }
+        m->Get(AI_MATKEY_GLTF_ALPHACUTOFF, out.alphaCutoff);
+        int twoSided = 0;
+        if (m->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) out.doubleSided = twoSided != 0;
+        return out;
+    }
+
+    MeshData mesh(const aiMesh* in) {
+        const std::string what = where + "mesh '" + in->mName.C_Str() + "': ";
+        MeshData out;
+        const unsigned n = in->mNumVertices;
+        if (!in->mVertices || n == 0) throw Error(what + "no vertices");
+        out.positions.reserve(n);
+        for (unsigned i = 0; i < n; ++i) {
+            const aiVector3D& p = in->mVertices[i];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                throw Error(what + "vertex " + std::to_string(i) + " has a non-finite position");
+            }
+            out.positions.push_back({p.x, p.y, p.z});
+        }
+        for (unsigned i = 0; i < n; ++i) {
+            glm::vec3 normal(0.0f, 0.0f, 1.0f);
+            if (in->mNormals) {
+                const aiVector3D& v = in->mNormals[i];
+                const glm::vec3 candidate(v.x, v.y, v.z);
+                const float length = glm::length(candidate);
+                // a zero or broken normal (BoxBadNormals) becomes +Z rather than NaN in the shader
+                if (std::isfinite(length) && length > 1e-6f) normal = candidate / length;
+            }
+            out.normals.push_back(normal);
+            glm::vec2 uv(0.0f);  // glTF: a missing uv is (0, 0)
+            if (in->mTextureCoords[0]) {
+                // Assimp turns glTF's v upside down; turn it back, so images load top row first
+                uv = {in->mTextureCoords[0][i].x, 1.0f - in->mTextureCoords[0][i].y};
+            }
+            out.uvs.push_back(uv);
+            glm::vec4 tangent(1.0f, 0.0f, 0.0f, 1.0f);
+            if (in->mTangents && in->mBitangents) {
+                const glm::vec3 t(in->mTangents[i].x, in->mTangents[i].y, in->mTangents[i].z);
+                const glm::vec3 b(in->mBitangents[i].x, in->mBitangents[i].y, in->mBitangents[i].z);
+                // Assimp's bitangent follows its flipped v, i.e. towards the image's top
+                if (std::isfinite(glm::dot(t, t)) && glm::length(t) > 1e-6f) {
+                    tangent = glm::vec4(glm::normalize(t),
+                                        glm::dot(glm::cross(normal, t), b) < 0.0f ? -1.0f : 1.0f);
+                }
+            }
+            out.tangents.push_back(tangent);
+            if (in->mColors[0]) {
+                const aiColor4D& c = in->mColors[0][i];
+                out.colors.push_back({c.r, c.g, c.b, c.a});
+            }
+        }
+        out.indices.reserve(size_t(in->mNumFaces) * 3);
+        for (unsigned f = 0; f < in->mNumFaces; ++f) {
+            const aiFace& face = in->mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines are not drawn
+            for (unsigned k = 0; k < 3; ++k) {
+                if (face.mIndices[k] >= n) {
+                    throw Error(what + "index " + std::to_string(face.mIndices[k]) +
+                                " out of range (" + std::to_string(n) + " vertices)");
+                }
+                out.indices.push_back(face.mIndices[k]);
+            }
+        }
+        return out;
+    }
+
+    void visit(const aiNode* node, const glm::mat4& parent, int depth,
+               std::set<const aiNode*>& seen) {
+        if (depth > 256 || !seen.insert(node).second)
+            throw Error(where + "the node hierarchy loops or is too deep");
+        const glm::mat4 transform = parent * toGlm(node->mTransformation);
+        for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+            if (node->mMeshes[i] >= scene->mNumMeshes)
+                throw Error(where + "a node names a mesh that does not exist");
+            const aiMesh* in = scene->mMeshes[node->mMeshes[i]];
+            if (!(in->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+            ModelPrimitive primitive{mesh(in), int(in->mMaterialIndex), transform};
+            if (primitive.mesh.indices.empty()) continue;
+            if (primitive.material < 0 || primitive.material >= int(model.materials.size())) {
+                throw Error(where + "a mesh names a material that does not exist");
+            }
+            model.primitives.push_back(std::move(primitive));
+        }
+        for (unsigned i = 0; i < node->mNumChildren; ++i)
+            visit(node->mChildren[i], transform, depth + 1, seen);
+    }
+};
+
+}  // namespace
+
+Model loadModel(const fs::path& file) {
+    std::error_code ec;
+    if (!fs::exists(file, ec)) throw Error(displayPath(file) + ": no such file");
+    if (!fs::is_regular_file(file, ec)) throw Error(displayPath(file) + ": not a file");
+    if (fs::file_size(file, ec) == 0) throw Error(displayPath(file) + ": empty file");
+
+    Assimp::Importer importer;
+    const aiScene* scene =
+        importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                             aiProcess_CalcTangentSpace | aiProcess_SortByPType |
+                                             aiProcess_ValidateDataStructure);
+    const std::string where = displayPath(file) + ": ";
+    if (!scene) {
+        std::string reason = importer.GetErrorString();
+        while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' '))
+            reason.pop_back();
+        throw Error(where + "cannot load (" + (reason.empty() ? "unknown reason" : reason) + ")");
+    }
+    if (!scene->mRootNode || scene->mNumMeshes == 0) {
+        throw Error(
+            where + "no meshes to draw" +
+            std::string(scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE ? " (incomplete scene)" : ""));
+    }
+
+    Model model;
+    model.file = fs::absolute(file);
+    Reader reader{scene, model, where};
+    for (unsigned i = 0; i < scene->mNumTextures; ++i) {
+        const aiTexture* t = scene->mTextures[i];
+        EmbeddedImage image;
+        image.name = t->mFilename.length ? t->mFilename.C_Str() : "*" + std::to_string(i);
+        if (t->mHeight == 0) {  // compressed: mWidth bytes of a PNG/JPEG file
+            const auto* bytes = reinterpret_cast<const std::uint8_t*>(t->pcData);
+            image.bytes.assign(bytes, bytes + t->mWidth);
+        } else {  // raw ARGB8888 texels
+            image.width = int(t->mWidth);
+            image.height = int(t->mHeight);
+            for (unsigned p = 0; p < t->mWidth * t->mHeight; ++p) {
+                image.bytes.insert(image.bytes.end(), {t->pcData[p].r, t->pcData[p].g,
+                                                       t->pcData[p].b, t->pcData[p].a});
+            }
+        }
+        model.embeddedImages.push_back(std::move(image));
+    }
+    for (unsigned i = 0; i < scene->mNumMaterials; ++i)
+        model.materials.push_back(reader.material(scene->mMaterials[i]));
+    std::set<const aiNode*> seen;
+    reader.visit(scene->mRootNode, glm::mat4(1.0f), 0, seen);
+    if (model.primitives.empty()) throw Error(where + "no triangles to draw");
+
+    model.boundsMin = glm::vec3(INFINITY);
+    model.boundsMax = glm::vec3(-INFINITY);
+    for (const ModelPrimitive& primitive : model.primitives) {
+        for (const glm::vec3& p : primitive.mesh.positions) {
+            const glm::vec3 world = glm::vec3(primitive.transform * glm::vec4(p, 1.0f));
+            model.boundsMin = glm::min(model.boundsMin, world);
+            model.boundsMax = glm::max(model.boundsMax, world);
+        }
+    }
+    if (!std::isfinite(glm::dot(model.boundsMin, model.boundsMax)))
+        throw Error(where + "non-finite node transforms");
+    return model;
+}
+
+Image loadTextureImage(const Model& model, const TextureRef& ref, int wantChannels) {
+    if (!ref.present()) throw Error(displayPath(model.file) + ": no such texture");
+    if (ref.embedded < 0) return readImage(ref.file, wantChannels);
+    const EmbeddedImage& embedded = model.embeddedImages.at(size_t(ref.embedded));
+    const std::string what = displayPath(model.file) + ": embedded image '" + embedded.name + "'";
+    if (embedded.width > 0) {
+        Image image{embedded.width, embedded.height, 4, embedded.bytes};
+        if (wantChannels == 0 || wantChannels == 4) return image;
+        Image out{image.width, image.height, wantChannels, {}};
+        for (size_t i = 0; i < image.pixels.size(); i += 4) {
+            for (int c = 0; c < wantChannels; ++c)
+                out.pixels.push_back(image.pixels[i + size_t(c)]);
+        }
+        return out;
+    }
+    return decodeImage(embedded.bytes, what, wantChannels);
+}
+
+GpuModel::GpuModel(const Model& model, TextureFilter filter) {
+    auto upload = [&](const TextureRef& ref, ColorSpace colorSpace) {
+        if (!ref.present() || textures_.count({ref, colorSpace})) return;
+        textures_[{ref, colorSpace}] =
+            std::make_unique<Texture2D>(loadTextureImage(model, ref), colorSpace, filter);
+    };
+    for (const Material& m : model.materials) {
+        upload(m.baseColorTexture, ColorSpace::Srgb);
+        upload(m.emissiveTexture, ColorSpace::Srgb);
+        upload(m.specularGlossinessTexture, ColorSpace::Srgb);
+        upload(m.metallicRoughnessTexture, ColorSpace::Linear);
+        upload(m.normalTexture, ColorSpace::Linear);
+        upload(m.occlusionTexture, ColorSpace::Linear);
+    }
+    for (const ModelPrimitive& p : model.primitives) {
+        primitives_.push_back({GpuMesh(p.mesh), &model.materials[size_t(p.material)], p.transform});
+    }
+}
+
+const Texture2D* GpuModel::texture(const TextureRef& ref, ColorSpace colorSpace) const {
+    auto found = textures_.find({ref, colorSpace});
+    return found == textures_.end() ? nullptr : found->second.get();
+}
+
+}  // namespace pbr

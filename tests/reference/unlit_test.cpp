@@ -1,0 +1,144 @@
+// Sample 03 against the unlit arithmetic done on the CPU from the same file: at pixels of the
+// project's showcase, colour = baseColorFactor x vertex colour x baseColorTexture, within 1/255.
+//
+// Exactness: no MSAA; a pixel is compared only where its ray hits a triangle away from the
+// triangle's edges (barycentrics >= 0.02), so perspective-correct interpolation of the vertex
+// colours is the same on both sides; and, on textured objects, only where the hit's uv lies 4 or
+// more texels inside one of the texture's 16 x 16 blocks, so every tap of trilinear filtering
+// (to mip level 2) reads that block's colour.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <optional>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "camera.h"
+#include "model.h"
+#include "paths.h"
+#include "support/golden.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+double srgbToLinear(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+double linearToSrgb(double c) {
+    c = std::clamp(c, 0.0, 1.0);
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+
+TEST(Reference, GltfUnlit03IsFactorTimesVertexColourTimesTexel) {
+    constexpr int kWidth = 1280, kHeight = 720;
+    const fs::path dir = testOutputDir("reference_03");
+    const SampleRender render =
+        renderSample("03_gltf_unlit", dir / "03_nomsaa.png", {"--msaa", "0"});
+    ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+    const Image image = readImage(render.image, 3);
+
+    const Model model = loadModel(modelDir() / "unlit_showcase.gltf");
+    const Image texture = loadTextureImage(model,
+                                           model.materials[0].baseColorTexture.present()
+                                               ? model.materials[0].baseColorTexture
+                                               : model.materials[2].baseColorTexture,
+                                           3);
+    ASSERT_EQ(texture.width, 128);
+
+    // The view at time 0: the model framed into a unit sphere, the camera on +Z looking down -Z.
+    const float aspect = float(kWidth) / float(kHeight);
+    const Framing framing = frameBounds(model.boundsMin, model.boundsMax, 45.0f, aspect);
+    const glm::dmat4 toWorld = glm::inverse(
+        glm::dmat4(glm::perspective(glm::radians(45.0f), aspect, 0.1f, 100.0f) *
+                   glm::lookAt(framing.cameraPosition, framing.cameraPosition + glm::vec3(0, 0, -1),
+                               glm::vec3(0, 1, 0))));
+
+    struct Triangle {
+        glm::dvec3 p[3];
+        glm::dvec4 color[3];
+        glm::dvec2 uv[3];
+        const Material* material;
+    };
+    std::vector<Triangle> triangles;
+    for (const ModelPrimitive& primitive : model.primitives) {
+        const glm::dmat4 m = glm::dmat4(framing.normalize * primitive.transform);
+        const MeshData& mesh = primitive.mesh;
+        for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+            Triangle t{};
+            t.material = &model.materials[size_t(primitive.material)];
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t v = mesh.indices[i + size_t(k)];
+                t.p[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[v]), 1.0));
+                t.color[k] = mesh.colors.empty() ? glm::dvec4(1.0) : glm::dvec4(mesh.colors[v]);
+                t.uv[k] = glm::dvec2(mesh.uvs[v]);
+            }
+            triangles.push_back(t);
+        }
+    }
+
+    int compared = 0, textured = 0;
+    double worst = 0.0;
+    for (int py = 0; py < kHeight; py += 4) {
+        for (int px = 0; px < kWidth; px += 4) {
+            const glm::dvec2 ndc(2.0 * (px + 0.5) / kWidth - 1.0, 1.0 - 2.0 * (py + 0.5) / kHeight);
+            const glm::dvec4 nearPoint = toWorld * glm::dvec4(ndc, -1.0, 1.0);
+            const glm::dvec4 farPoint = toWorld * glm::dvec4(ndc, 1.0, 1.0);
+            const glm::dvec3 origin = glm::dvec3(nearPoint) / nearPoint.w;
+            const glm::dvec3 dir = glm::normalize(glm::dvec3(farPoint) / farPoint.w - origin);
+            // nearest hit (Moller-Trumbore)
+            double bestT = INFINITY;
+            const Triangle* hit = nullptr;
+            glm::dvec3 bary(0.0);
+            for (const Triangle& t : triangles) {
+                const glm::dvec3 e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
+                const glm::dvec3 q = glm::cross(dir, e2);
+                const double det = glm::dot(e1, q);
+                if (std::abs(det) < 1e-12) continue;
+                const glm::dvec3 s = origin - t.p[0];
+                const double u = glm::dot(s, q) / det;
+                const glm::dvec3 r = glm::cross(s, e1);
+                const double v = glm::dot(dir, r) / det;
+                const double dist = glm::dot(e2, r) / det;
+                if (u < 0 || v < 0 || u + v > 1 || dist <= 0 || dist >= bestT) continue;
+                bestT = dist;
+                hit = &t;
+                bary = {1.0 - u - v, u, v};
+            }
+            if (!hit || std::min({bary.x, bary.y, bary.z}) < 0.02) continue;
+            const Material& material = *hit->material;
+            glm::dvec4 color =
+                (bary.x * hit->color[0] + bary.y * hit->color[1] + bary.z * hit->color[2]) *
+                glm::dvec4(material.baseColorFactor);
+            if (material.baseColorTexture.present()) {
+                const glm::dvec2 uv =
+                    bary.x * hit->uv[0] + bary.y * hit->uv[1] + bary.z * hit->uv[2];
+                const glm::dvec2 texel = uv * 128.0;
+                const glm::dvec2 inBlock = texel - 16.0 * glm::floor(texel / 16.0);
+                if (std::min(inBlock.x, inBlock.y) < 4.0 || std::max(inBlock.x, inBlock.y) > 12.0)
+                    continue;
+                const int tx = std::clamp(int(texel.x), 0, 127),
+                          ty = std::clamp(int(texel.y), 0, 127);
+                for (int c = 0; c < 3; ++c) color[c] *= srgbToLinear(texture.at(tx, ty, c) / 255.0);
+                ++textured;
+            }
+            for (int c = 0; c < 3; ++c) {
+                const double expected = std::round(linearToSrgb(color[c]) * 255.0);
+                const double diff = std::abs(double(image.at(px, py, c)) - expected);
+                worst = std::max(worst, diff);
+                EXPECT_LE(diff, 1.0)
+                    << material.name << " at pixel (" << px << ", " << py << ") channel " << c
+                    << ": rendered " << int(image.at(px, py, c)) << ", CPU " << expected;
+            }
+            ++compared;
+        }
+    }
+    std::printf("compared %d pixels (%d textured); worst channel diff %.0f/255\n", compared,
+                textured, worst);
+    EXPECT_GT(compared, 2000);
+    EXPECT_GT(textured, 400);
+}
+
+}  // namespace
+}  // namespace pbr::test
