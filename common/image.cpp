@@ -70,6 +70,36 @@ void writePng(const fs::path& path, const Image& image) {
     if (!ok) throw Error(displayPath(path) + ": cannot write PNG (is the folder writable?)");
 }
 
+HdrImage readHdr(const fs::path& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw Error(displayPath(path) + ": no such file");
+    if (fs::file_size(path, ec) == 0) throw Error(displayPath(path) + ": empty file");
+    if (!stbi_is_hdr(path.c_str())) throw Error(displayPath(path) + ": not a Radiance .hdr file");
+    int width = 0, height = 0, channels = 0;
+    std::unique_ptr<float, void (*)(void*)> data(
+        stbi_loadf(path.c_str(), &width, &height, &channels, 3), stbi_image_free);
+    if (!data) {
+        const char* reason = stbi_failure_reason();
+        throw Error(displayPath(path) + ": cannot decode HDR image (" +
+                    (reason ? reason : "unknown reason") + ")");
+    }
+    HdrImage image{width, height, {}};
+    image.pixels.assign(data.get(), data.get() + size_t(width) * size_t(height) * 3);
+    return image;
+}
+
+void writeHdr(const fs::path& path, const HdrImage& image) {
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != size_t(image.width) * size_t(image.height) * 3) {
+        throw Error(displayPath(path) + ": cannot write an empty or malformed HDR image");
+    }
+    std::error_code ec;
+    if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
+    if (!stbi_write_hdr(path.c_str(), image.width, image.height, 3, image.pixels.data())) {
+        throw Error(displayPath(path) + ": cannot write HDR (is the folder writable?)");
+    }
+}
+
 Image flipRows(const Image& image) {
     Image flipped = image;
     const size_t rowBytes = size_t(image.width) * size_t(image.channels);

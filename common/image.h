@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 namespace pbr {
 
 struct Image {
@@ -29,6 +31,22 @@ Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& wha
 void writePng(const std::filesystem::path& path, const Image& image);
 // The image with its rows in the opposite order (GL reads bottom row first).
 Image flipRows(const Image& image);
+
+// A float RGB image (linear radiance), rows top first: Radiance .hdr files.
+struct HdrImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> pixels;  // RGB
+
+    glm::vec3 at(int x, int y) const {
+        const size_t i = (size_t(y) * size_t(width) + size_t(x)) * 3;
+        return {pixels[i], pixels[i + 1], pixels[i + 2]};
+    }
+};
+// Reads a Radiance .hdr; throws Error("<path>: <reason>").
+HdrImage readHdr(const std::filesystem::path& path);
+// Writes a Radiance .hdr (RGBE, run-length encoded); same bytes for the same pixels.
+void writeHdr(const std::filesystem::path& path, const HdrImage& image);
 
 // How far `actual` is from `expected` (same size; colour channels only, alpha ignored).
 struct ImageDiff {

@@ -2,10 +2,12 @@
 // and the pictures of it in the READMEs are current.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "image.h"
 #include "paths.h"
 #include "support/process.h"
 
@@ -36,6 +38,65 @@ TEST(Resources, ContactSheetInTheReadmeIsCurrent) {
     EXPECT_TRUE(committed == built)
         << "samples/02_lighting_textured/contact_sheet.png is out of date: copy it from "
         << materialDir().string();
+}
+
+// The HDR environment has real dynamic range and its sun where the recipe puts it.
+TEST(Resources, EnvironmentHasASunHundredsOfTimesBrighterThanTheRest) {
+    const HdrImage env = readHdr(fs::path(PBR_ENVIRONMENT_DIR) / "sunny_courtyard.hdr");
+    ASSERT_EQ(env.width, 2048);
+    ASSERT_EQ(env.height, 1024);
+    std::vector<float> luminance;
+    float brightest = 0.0f;
+    for (int y = 0; y < env.height; ++y) {
+        for (int x = 0; x < env.width; ++x) {
+            const glm::vec3 c = env.at(x, y);
+            const float l = 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+            luminance.push_back(l);
+            brightest = std::max(brightest, l);
+        }
+    }
+    std::nth_element(luminance.begin(), luminance.begin() + luminance.size() / 2, luminance.end());
+    const float median = luminance[luminance.size() / 2];
+    EXPECT_GT(brightest / median, 1000.0f) << "brightest " << brightest << ", median " << median;
+    // the sun's centroid: 35 degrees up (rows from the top: (90 - 35) / 180 of the height),
+    // towards -X (left of the centre column), and a disc about 2.6 degrees wide
+    double sumX = 0, sumY = 0;
+    int count = 0;
+    for (int y = 0; y < env.height; ++y) {
+        for (int x = 0; x < env.width; ++x) {
+            const glm::vec3 c = env.at(x, y);
+            if (0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b > 0.5f * brightest)
+                sumX += x, sumY += y, ++count;
+        }
+    }
+    EXPECT_NEAR(sumY / count + 0.5, (90.0 - 35.0) / 180.0 * env.height, 1.5);
+    EXPECT_LT(sumX / count, env.width / 2.0);
+    const double discTexels =
+        M_PI * std::pow(1.3 / 180.0 * env.height, 2) / std::cos(35.0 * M_PI / 180.0);
+    EXPECT_NEAR(count, discTexels, 0.25 * discTexels);
+    // the top row is sky blue, the bottom row is the ground
+    EXPECT_GT(env.at(10, 0).b, env.at(10, 0).r);
+    EXPECT_GT(env.at(10, env.height - 1).r, env.at(10, env.height - 1).b);
+}
+
+TEST(Resources, HdrRoundTrip) {
+    const fs::path dir = testOutputDir("resources_hdr");
+    HdrImage image{3,
+                   2,
+                   {0.0f, 0.5f, 1.0f, 2.0f, 4.0f, 8.0f, 100.0f, 1000.0f, 5000.0f, 0.25f, 0.125f,
+                    0.0625f, 1.0f, 1.0f, 1.0f, 3.0f, 2.0f, 1.0f}};
+    writeHdr(dir / "tiny.hdr", image);
+    const HdrImage back = readHdr(dir / "tiny.hdr");
+    ASSERT_EQ(back.width, 3);
+    ASSERT_EQ(back.height, 2);
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        // RGBE keeps 8 bits of mantissa relative to the pixel's largest channel
+        const float largest = std::max(
+            {image.pixels[i / 3 * 3], image.pixels[i / 3 * 3 + 1], image.pixels[i / 3 * 3 + 2]});
+        EXPECT_NEAR(back.pixels[i], image.pixels[i], largest / 128.0f) << i;
+    }
+    std::ofstream(dir / "not.hdr") << "not an hdr\n";
+    EXPECT_THROW(readHdr(dir / "not.hdr"), std::exception);
 }
 
 // Khronos' validator on our own glTF asset, where node and the validator are installed
