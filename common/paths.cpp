@@ -31,6 +31,9 @@ fs::path materialDir() {
 fs::path modelDir() {
     return fromEnvOr("PBR_MODEL_DIR", PBR_MODEL_DIR);
 }
+fs::path environmentDir() {
+    return fromEnvOr("PBR_ENVIRONMENT_DIR", PBR_ENVIRONMENT_DIR);
+}
 
 std::string displayPath(const fs::path& path) {
     std::error_code ec;

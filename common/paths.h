@@ -13,6 +13,9 @@ std::filesystem::path resourceDir();
 std::filesystem::path materialDir();
 // The models the build writes (build/.../resources/models), or $PBR_MODEL_DIR.
 std::filesystem::path modelDir();
+// The HDR environments the build writes (build/.../resources/environments), or
+// $PBR_ENVIRONMENT_DIR.
+std::filesystem::path environmentDir();
 // A path as a user wants to read it in a message: relative to the working directory when it lies
 // below it, absolute otherwise.
 std::string displayPath(const std::filesystem::path& path);

@@ -1,5 +1,7 @@
 #include "texture.h"
 
+#include <algorithm>
+
 #include "error.h"
 #include "paths.h"
 
@@ -47,6 +49,50 @@ Texture2D::Texture2D(const Image& source, ColorSpace colorSpace, TextureFilter f
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     }
+}
+
+Texture2D::Texture2D(const HdrImage& image) : width_(image.width), height_(image.height) {
+    glBindTexture(GL_TEXTURE_2D, texture_.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, image.width, image.height, 0, GL_RGB, GL_FLOAT,
+                 image.pixels.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // the seam at u = 0 / 1
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+TextureCube::TextureCube(int size, int levels) : size_(size), levels_(levels) {
+    glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
+    for (int level = 0; level < levels; ++level) {
+        const int s = std::max(1, size >> level);
+        for (int face = 0; face < 6; ++face) {
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, GL_RGB16F, s, s, 0,
+                         GL_RGB, GL_FLOAT, nullptr);
+        }
+    }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER,
+                    levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+void TextureCube::bind(int unit) const {
+    glActiveTexture(GL_TEXTURE0 + GLenum(unit));
+    glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
+}
+
+std::vector<float> TextureCube::readFace(int face, int level) const {
+    const int s = std::max(1, size_ >> level);
+    std::vector<float> texels(size_t(s) * size_t(s) * 3);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, GL_RGB, GL_FLOAT,
+                  texels.data());
+    return texels;
 }
 
 Texture2D Texture2D::load(const std::filesystem::path& path, ColorSpace colorSpace,

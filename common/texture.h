@@ -25,13 +25,34 @@ public:
     static Texture2D load(const std::filesystem::path& path, ColorSpace colorSpace,
                           TextureFilter filter = TextureFilter::Trilinear);
 
+    // A float RGB image (an HDR environment): RGB16F, linear filtering, no mipmaps, clamped.
+    explicit Texture2D(const HdrImage& image);
+
     void bind(int unit) const;
     int width() const { return width_; }
     int height() const { return height_; }
+    GLuint id() const { return texture_.id(); }
 
 private:
     GlTexture texture_;
     int width_ = 0, height_ = 0;
+};
+
+// A cube map of float RGB faces (RGB16F), seamless filtering expected (the App turns it on).
+// Faces are rendered into by the IBL precomputation; `levels` mip levels are allocated.
+class TextureCube {
+public:
+    TextureCube(int size, int levels);
+    void bind(int unit) const;
+    int size() const { return size_; }
+    int levels() const { return levels_; }
+    GLuint id() const { return texture_.id(); }
+    // The texels of one face at one level, RGB floats, row 0 at the face's t = 0.
+    std::vector<float> readFace(int face, int level) const;
+
+private:
+    GlTexture texture_;
+    int size_, levels_;
 };
 
 // A PBR material folder in the tutorial's layout: albedo, normal, metallic, roughness and ao,

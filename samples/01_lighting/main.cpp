@@ -22,7 +22,7 @@ int main(int argc, char** argv) try {
     const int lightCount = app.flagInt("--lights", 0, 4, 4);
     const float roughnessOffset = app.flagFloat("--roughness-offset", 0.0f);
 
-    pbr::Shader& shader = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
+    pbr::Shader& shader = app.shader("common/pbr.vert", "01_lighting/pbr.frag");
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
 
     // Constant material and the lights, set before the first frame is drawn (the text's first

@@ -35,6 +35,13 @@ vec3 fresnelSchlick(float cosTheta, vec3 F0)
     return F0 + (1.0 - F0) * pow(clamp(1.0 - cosTheta, 0.0, 1.0), 5.0);
 }
 
+// Fresnel-Schlick for the environment: no single half vector, so roughness damps the rise at
+// grazing angles (Sebastien Lagarde's approximation, as in LearnOpenGL's IBL chapters).
+vec3 fresnelSchlickRoughness(float cosTheta, vec3 F0, float roughness)
+{
+    return F0 + (max(vec3(1.0 - roughness), F0) - F0) * pow(clamp(1.0 - cosTheta, 0.0, 1.0), 5.0);
+}
+
 // Outgoing radiance from one light arriving along L with `radiance`: the reflectance equation's
 // integrand for a single direction, (kD * albedo / PI + specular) * radiance * NdotL.
 vec3 directLight(vec3 N, vec3 V, vec3 L, vec3 radiance, vec3 albedo, float metallic, float roughness)

@@ -6,6 +6,7 @@
 
 #include "app.h"
 #include "error.h"
+#include "ibl.h"
 #include "mesh.h"
 #include "paths.h"
 #include "support/process.h"
@@ -89,7 +90,7 @@ TEST(Gl, ALeakedObjectIsReportedAtExit) {
 TEST(Gl, ReloadKeepsTheUniformValuesAlreadySet) {
     const fs::path dir = test::testOutputDir("gl_reload");
     App app = makeApp(dir);
-    Shader& shader = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
+    Shader& shader = app.shader("common/pbr.vert", "01_lighting/pbr.frag");
     shader.set("roughness", 0.375f);
     const GLuint before = shader.id();
     ASSERT_TRUE(shader.reload());
@@ -107,7 +108,7 @@ TEST(Gl, ReloadOfABrokenEditKeepsTheOldProgram) {
     setenv("PBR_SHADER_DIR", (dir / "shaders").c_str(), 1);
     {
         App app = makeApp(dir);
-        Shader& shader = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
+        Shader& shader = app.shader("common/pbr.vert", "01_lighting/pbr.frag");
         const GLuint before = shader.id();
         std::ofstream(dir / "shaders/01_lighting/pbr.frag", std::ios::app)
             << "\nthis is not glsl\n";
@@ -117,6 +118,42 @@ TEST(Gl, ReloadOfABrokenEditKeepsTheOldProgram) {
         }
     }
     unsetenv("PBR_SHADER_DIR");
+}
+
+// The irradiance convolution against values known in closed form (stored as irradiance / pi):
+// a constant environment L gives L everywhere; an environment bright (1) above the horizon and
+// black below gives 1 facing up, 0 facing down and exactly 1/2 facing any horizontal direction
+// (by symmetry half of the cosine-weighted hemisphere lies above the horizon).
+TEST(Gl, IrradianceOfKnownEnvironments) {
+    const fs::path dir = test::testOutputDir("gl_irradiance");
+    App app = makeApp(dir);
+    auto convolve = [](const HdrImage& image) {
+        const Texture2D equirect(image);
+        const TextureCube environment = equirectangularToCubemap(equirect, 64);
+        return convolveIrradiance(environment, 8);
+    };
+    HdrImage constant{64, 32, std::vector<float>(64 * 32 * 3, 2.0f)};
+    const TextureCube flat = convolve(constant);
+    for (int face = 0; face < 6; ++face) {
+        for (float texel : flat.readFace(face, 0))
+            EXPECT_NEAR(texel, 2.0f, 0.02f) << "face " << face;
+    }
+
+    HdrImage sky{64, 32, std::vector<float>(64 * 32 * 3, 0.0f)};
+    std::fill(sky.pixels.begin(), sky.pixels.begin() + 64 * 16 * 3, 1.0f);  // top half: up
+    const TextureCube halves = convolve(sky);
+    auto centre = [&](int face) {
+        const std::vector<float> texels = halves.readFace(face, 0);
+        // the average of the face's four central texels (8 x 8 face), red channel
+        return (texels[(3 * 8 + 3) * 3] + texels[(3 * 8 + 4) * 3] + texels[(4 * 8 + 3) * 3] +
+                texels[(4 * 8 + 4) * 3]) /
+               4.0f;
+    };
+    EXPECT_NEAR(centre(2), 1.0f, 0.02f);  // +Y: the whole hemisphere is sky
+    EXPECT_NEAR(centre(3), 0.0f, 0.02f);  // -Y: the whole hemisphere is ground
+    for (int face : {0, 1, 4, 5}) EXPECT_NEAR(centre(face), 0.5f, 0.03f) << "face " << face;
+    while (app.nextFrame()) {
+    }
 }
 
 TEST(Gl, MoreSamplesThanTheDriverAllowsIsAClearError) {

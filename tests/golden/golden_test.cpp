@@ -114,6 +114,12 @@ TEST_P(GoldenOnBackend, BoxTexturedInEveryFormMatchesOneGolden) {
     }
 }
 
+TEST_P(GoldenOnBackend, IblIrradiance04MatchesGolden) {
+    const SampleRender rendered = render("04_ibl_irradiance");
+    expectCleanRun(rendered);
+    EXPECT_TRUE(matchesGolden("04_ibl_irradiance", rendered));
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, GoldenOnBackend, ::testing::ValuesIn(offscreenBackends()),
                          [](const auto& info) { return info.param; });
 
@@ -196,7 +202,8 @@ TEST(Golden, TangentFramesAgree) {
 TEST(Golden, HeadlessOutputIsBitIdentical) {
     const fs::path dir = testOutputDir("golden_determinism");
     const std::vector<std::string> args = {"--size", "640x360"};
-    for (const std::string sample : {"01_lighting", "02_lighting_textured", "03_gltf_unlit"}) {
+    for (const std::string sample :
+         {"01_lighting", "02_lighting_textured", "03_gltf_unlit", "04_ibl_irradiance"}) {
         const SampleRender first = renderSample(sample, dir / (sample + ".first.png"), args);
         const SampleRender second = renderSample(sample, dir / (sample + ".second.png"), args);
         expectCleanRun(first);

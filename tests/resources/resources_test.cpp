@@ -79,6 +79,15 @@ TEST(Resources, EnvironmentHasASunHundredsOfTimesBrighterThanTheRest) {
     EXPECT_GT(env.at(10, env.height - 1).r, env.at(10, env.height - 1).b);
 }
 
+TEST(Resources, EnvironmentPictureInTheReadmeIsCurrent) {
+    const std::string committed =
+        readBytes(fs::path(PBR_SOURCE_DIR) / "samples/04_ibl_irradiance/environment.png");
+    const std::string built =
+        readBytes(fs::path(PBR_ENVIRONMENT_DIR) / "sunny_courtyard_preview.png");
+    ASSERT_FALSE(built.empty());
+    EXPECT_TRUE(committed == built) << "samples/04_ibl_irradiance/environment.png is out of date";
+}
+
 TEST(Resources, HdrRoundTrip) {
     const fs::path dir = testOutputDir("resources_hdr");
     HdrImage image{3,

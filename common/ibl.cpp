@@ -1,0 +1,88 @@
+#include "ibl.h"
+
+#include <array>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "framebuffer.h"
+
+namespace pbr {
+
+namespace {
+
+// The six views from the centre of a cube map, in GL's face order (+X, -X, +Y, -Y, +Z, -Z),
+// with the up vectors the cube-map convention needs.
+std::array<glm::mat4, 6> captureViews() {
+    const glm::vec3 o(0.0f);
+    return {glm::lookAt(o, {1, 0, 0}, {0, -1, 0}), glm::lookAt(o, {-1, 0, 0}, {0, -1, 0}),
+            glm::lookAt(o, {0, 1, 0}, {0, 0, 1}),  glm::lookAt(o, {0, -1, 0}, {0, 0, -1}),
+            glm::lookAt(o, {0, 0, 1}, {0, -1, 0}), glm::lookAt(o, {0, 0, -1}, {0, -1, 0})};
+}
+
+// Renders `shader` over the unit cube into every face of `target` at `level`.
+void renderFaces(Shader& shader, const TextureCube& target, int level) {
+    const GpuMesh cube(pbr::cube());
+    const GlFramebuffer framebuffer;
+    const int size = std::max(1, target.size() >> level);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glViewport(0, 0, size, size);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    shader.set("projection", glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f));
+    const auto views = captureViews();
+    for (int face = 0; face < 6; ++face) {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                               GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), target.id(), level);
+        requireCompleteFramebuffer("cube map face");
+        shader.set("view", views[size_t(face)]);
+        cube.draw();
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace
+
+TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size) {
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    const int levels = int(std::floor(std::log2(double(size)))) + 1;
+    TextureCube cube(size, levels);
+    Shader shader("ibl/cubemap.vert", "ibl/equirect_to_cube.frag");
+    shader.set("equirectangularMap", 0);
+    equirectangular.bind(0);
+    renderFaces(shader, cube, 0);
+    cube.bind(0);
+    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    return cube;
+}
+
+TextureCube convolveIrradiance(const TextureCube& environment, int size, float sampleDelta) {
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    TextureCube irradiance(size, 1);
+    Shader shader("ibl/cubemap.vert", "ibl/irradiance.frag");
+    shader.set("environmentMap", 0);
+    shader.set("sampleDelta", sampleDelta);
+    shader.set("sourceTexelSolidAngle",
+               float(4.0 * M_PI / (6.0 * double(environment.size()) * double(environment.size()))));
+    environment.bind(0);
+    renderFaces(shader, irradiance, 0);
+    return irradiance;
+}
+
+Skybox::Skybox() : shader_("ibl/skybox.vert", "ibl/skybox.frag"), cube_(pbr::cube()) {
+    shader_.set("environmentMap", 0);
+}
+
+void Skybox::draw(const TextureCube& environment, const glm::mat4& view,
+                  const glm::mat4& projection) {
+    glDepthFunc(GL_LEQUAL);  // the sky sits at depth 1, where the cleared depth is
+    shader_.use();
+    shader_.set("view", view);
+    shader_.set("projection", projection);
+    environment.bind(0);
+    cube_.draw();
+    glDepthFunc(GL_LESS);
+}
+
+}  // namespace pbr

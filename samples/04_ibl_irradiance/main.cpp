@@ -1,0 +1,80 @@
+// 04 ibl_irradiance: LearnOpenGL "PBR / IBL / Diffuse irradiance". An HDR environment becomes a
+// cube map, its irradiance is convolved into a small cube map, and the sphere grid of 01 takes its
+// ambient light from it; the environment is drawn behind as a skybox. See README.md beside this
+// file.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <string>
+
+#include "app.h"
+#include "error.h"
+#include "ibl.h"
+#include "mesh.h"
+#include "paths.h"
+#include "sphere_grid.h"
+
+int main(int argc, char** argv) try {
+    pbr::App app(argc, argv,
+                 {.name = "04_ibl_irradiance",
+                  .title = "04 IBL: diffuse irradiance",
+                  .cameraPosition = {0.0f, 0.0f, 21.0f},  // 23 from the grid at z = -2
+                  .flags = {{"--hdr", "FILE",
+                             "an equirectangular .hdr environment (default: the project's)"}}});
+
+    // Precompute: the environment cube (512^2, mipmapped) and its irradiance (32^2).
+    const auto start = std::chrono::steady_clock::now();
+    const pbr::Texture2D equirectangular(pbr::readHdr(
+        app.flag("--hdr").value_or((pbr::environmentDir() / "sunny_courtyard.hdr").string())));
+    const pbr::TextureCube environmentMap = pbr::equirectangularToCubemap(equirectangular, 512);
+    const pbr::TextureCube irradianceMap = pbr::convolveIrradiance(environmentMap, 32);
+    glFinish();
+    app.addPrecomputeSeconds(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+
+    pbr::Shader& shader = app.shader("common/pbr.vert", "04_ibl_irradiance/pbr.frag");
+    pbr::Skybox skybox;
+    const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
+
+    shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
+    shader.set("ao", 1.0f);
+    shader.set("irradianceMap", 0);
+    const std::array<glm::vec3, 4> lightPositions = {
+        glm::vec3(-10.0f, 10.0f, 10.0f),
+        glm::vec3(10.0f, 10.0f, 10.0f),
+        glm::vec3(-10.0f, -10.0f, 10.0f),
+        glm::vec3(10.0f, -10.0f, 10.0f),
+    };
+    shader.set("lightCount", 4);
+    for (int i = 0; i < 4; ++i) {
+        shader.set("lightPositions[" + std::to_string(i) + "]", lightPositions[size_t(i)]);
+        shader.set("lightColors[" + std::to_string(i) + "]", glm::vec3(300.0f));
+    }
+    const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
+
+    glEnable(GL_DEPTH_TEST);
+    while (app.nextFrame()) {
+        glClearColor(0.2f, 0.3f, 0.3f, 1.0f);  // hidden by the skybox wherever it is drawn
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+        shader.use();
+        shader.set("projection", app.projection());
+        shader.set("view", app.view());
+        shader.set("camPos", app.camera().position());
+        irradianceMap.bind(0);
+        for (int row = 0; row < grid.nrRows; ++row) {
+            shader.set("metallic", float(row) / float(grid.nrRows));
+            for (int col = 0; col < grid.nrColumns; ++col) {
+                shader.set("roughness",
+                           std::clamp(float(col) / float(grid.nrColumns), 0.05f, 1.0f));
+                shader.setModel(grid.model(row, col));
+                sphere.draw();
+            }
+        }
+
+        skybox.draw(environmentMap, app.view(), app.projection());  // last: only where nothing is
+    }
+    return 0;
+} catch (...) {
+    return pbr::reportFailure();
+}
