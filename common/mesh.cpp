@@ -127,40 +127,46 @@ GpuMesh::GpuMesh(const MeshData& data)
     for (std::uint32_t index : data.indices) {
         if (index >= count) throw Error("GpuMesh: index out of range");
     }
-    // Interleaved: position, uv, normal, tangent, colour (16 floats a vertex).
-    struct Vertex {
-        glm::vec3 position;
-        glm::vec2 uv;
-        glm::vec3 normal;
-        glm::vec4 tangent;
-        glm::vec4 color;
-    };
-    std::vector<Vertex> vertices(count);
+    // Interleaved: position, uv, normal, tangent (12 floats a vertex), and the colour (4 more)
+    // only when the mesh has one: the grid samples are vertex-bound, every byte counts.
+    hasColors_ = !data.colors.empty();
+    const size_t stride = hasColors_ ? 16 : 12;
+    std::vector<float> vertices;
+    vertices.reserve(count * stride);
     for (size_t i = 0; i < count; ++i) {
-        const glm::vec4 color = data.colors.empty() ? glm::vec4(1.0f) : data.colors[i];
-        vertices[i] = {data.positions[i], data.uvs[i], data.normals[i], data.tangents[i], color};
+        const glm::vec3& p = data.positions[i];
+        const glm::vec2& uv = data.uvs[i];
+        const glm::vec3& n = data.normals[i];
+        const glm::vec4& t = data.tangents[i];
+        vertices.insert(vertices.end(), {p.x, p.y, p.z, uv.x, uv.y, n.x, n.y, n.z, t.x, t.y, t.z, t.w});
+        if (hasColors_) {
+            const glm::vec4& c = data.colors[i];
+            vertices.insert(vertices.end(), {c.r, c.g, c.b, c.a});
+        }
     }
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(),
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(),
                  GL_STATIC_DRAW);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices_.id());
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(data.indices.size() * sizeof(std::uint32_t)),
                  data.indices.data(), GL_STATIC_DRAW);
-    auto attribute = [](GLuint location, GLint size, size_t offset) {
+    auto attribute = [stride](GLuint location, GLint size, size_t offset) {
         glEnableVertexAttribArray(location);
-        glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                              reinterpret_cast<const void*>(offset));
+        glVertexAttribPointer(location, size, GL_FLOAT, GL_FALSE, GLsizei(stride * sizeof(float)),
+                              reinterpret_cast<const void*>(offset * sizeof(float)));
     };
-    attribute(kAttribPosition, 3, offsetof(Vertex, position));
-    attribute(kAttribUv, 2, offsetof(Vertex, uv));
-    attribute(kAttribNormal, 3, offsetof(Vertex, normal));
-    attribute(kAttribTangent, 4, offsetof(Vertex, tangent));
-    attribute(kAttribColor, 4, offsetof(Vertex, color));
+    attribute(kAttribPosition, 3, 0);
+    attribute(kAttribUv, 2, 3);
+    attribute(kAttribNormal, 3, 5);
+    attribute(kAttribTangent, 4, 8);
+    if (hasColors_) attribute(kAttribColor, 4, 12);
     glBindVertexArray(0);
 }
 
 void GpuMesh::draw() const {
+    // Without a colour array the shader reads the current generic value: make it white.
+    if (!hasColors_) glVertexAttrib4f(kAttribColor, 1.0f, 1.0f, 1.0f, 1.0f);
     glBindVertexArray(vao_.id());
     glDrawElements(mode_, indexCount_, GL_UNSIGNED_INT, nullptr);
 }

@@ -62,6 +62,7 @@ private:
     GlBuffer indices_;
     GLsizei indexCount_ = 0;
     GLenum mode_ = GL_TRIANGLES;
+    bool hasColors_ = false;
 };
 
 }  // namespace pbr
