@@ -31,6 +31,11 @@ struct SurfacePoint {
 glm::vec3 shadePointLights(const SurfacePoint& surface, const glm::vec3& cameraPosition,
                            std::span<const PointLight> lights);
 
+// The split-sum BRDF integral for image-based lighting: the scale (x) and bias (y) to F0 of
+// the GGX specular lobe at NdotV and roughness (k = roughness^2 / 2), by importance sampling
+// with `samples` Hammersley points, in double precision.
+glm::dvec2 integrateBrdf(double NdotV, double roughness, int samples);
+
 // Reinhard c / (c + 1), then gamma 1/2.2: what the direct-light samples write.
 glm::vec3 reinhardGamma(const glm::vec3& color);
 

@@ -70,6 +70,23 @@ TextureCube convolveIrradiance(const TextureCube& environment, int size, float s
     return irradiance;
 }
 
+Texture2D computeBrdfLut(int size, int samples) {
+    Texture2D lut(size, size, GL_RG16F);
+    const GlFramebuffer framebuffer;
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, lut.id(), 0);
+    requireCompleteFramebuffer("BRDF LUT");
+    glViewport(0, 0, size, size);
+    glDisable(GL_DEPTH_TEST);
+    Shader shader("ibl/fullscreen.vert", "ibl/brdf_lut.frag");
+    shader.set("sampleCount", samples);
+    const GpuMesh quad(pbr::quad());
+    quad.draw();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glEnable(GL_DEPTH_TEST);
+    return lut;
+}
+
 Skybox::Skybox() : shader_("ibl/skybox.vert", "ibl/skybox.frag"), cube_(pbr::cube()) {
     shader_.set("environmentMap", 0);
 }

@@ -16,6 +16,10 @@ TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size)
 // faces, one sample every `sampleDelta` radians of the hemisphere.
 TextureCube convolveIrradiance(const TextureCube& environment, int size, float sampleDelta = 0.05f);
 
+// The split-sum BRDF lookup table, `size`^2, RG16F: x = NdotV, y = roughness, both sampled at
+// texel centres ((i + 0.5) / size); R = scale, G = bias to F0; `samples` Hammersley points.
+Texture2D computeBrdfLut(int size, int samples = 1024);
+
 // Draws a cube map behind everything else (depth 1, LEQUAL), tone-mapped like the samples.
 class Skybox {
 public:

@@ -138,7 +138,8 @@ GpuMesh::GpuMesh(const MeshData& data)
         const glm::vec2& uv = data.uvs[i];
         const glm::vec3& n = data.normals[i];
         const glm::vec4& t = data.tangents[i];
-        vertices.insert(vertices.end(), {p.x, p.y, p.z, uv.x, uv.y, n.x, n.y, n.z, t.x, t.y, t.z, t.w});
+        vertices.insert(vertices.end(),
+                        {p.x, p.y, p.z, uv.x, uv.y, n.x, n.y, n.z, t.x, t.y, t.z, t.w});
         if (hasColors_) {
             const glm::vec4& c = data.colors[i];
             vertices.insert(vertices.end(), {c.r, c.g, c.b, c.a});

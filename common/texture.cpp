@@ -62,6 +62,26 @@ Texture2D::Texture2D(const HdrImage& image) : width_(image.width), height_(image
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
 }
 
+Texture2D::Texture2D(int width, int height, GLenum internalFormat)
+    : width_(width), height_(height) {
+    glBindTexture(GL_TEXTURE_2D, texture_.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), width, height, 0, GL_RGBA, GL_FLOAT,
+                 nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+}
+
+std::vector<float> Texture2D::readFloats(int channels) const {
+    static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+    std::vector<float> texels(size_t(width_) * size_t(height_) * size_t(channels));
+    glBindTexture(GL_TEXTURE_2D, texture_.id());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTexImage(GL_TEXTURE_2D, 0, kFormats[channels - 1], GL_FLOAT, texels.data());
+    return texels;
+}
+
 TextureCube::TextureCube(int size, int levels) : size_(size), levels_(levels) {
     glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
     for (int level = 0; level < levels; ++level) {

@@ -27,6 +27,10 @@ public:
 
     // A float RGB image (an HDR environment): RGB16F, linear filtering, no mipmaps, clamped.
     explicit Texture2D(const HdrImage& image);
+    // An empty render target texture of `internalFormat` (GL_RG16F, ...), linear, clamped.
+    Texture2D(int width, int height, GLenum internalFormat);
+    // Level 0 as floats, `channels` (1-4) per texel, row 0 at t = 0.
+    std::vector<float> readFloats(int channels) const;
 
     void bind(int unit) const;
     int width() const { return width_; }

@@ -2,9 +2,11 @@
 // shader reload, the render target. Each test makes its own headless App.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include "app.h"
+#include "brdf.h"
 #include "error.h"
 #include "ibl.h"
 #include "mesh.h"
@@ -152,6 +154,36 @@ TEST(Gl, IrradianceOfKnownEnvironments) {
     EXPECT_NEAR(centre(2), 1.0f, 0.02f);  // +Y: the whole hemisphere is sky
     EXPECT_NEAR(centre(3), 0.0f, 0.02f);  // -Y: the whole hemisphere is ground
     for (int face : {0, 1, 4, 5}) EXPECT_NEAR(centre(face), 0.5f, 0.03f) << "face " << face;
+    while (app.nextFrame()) {
+    }
+}
+
+// The BRDF LUT (1024 Hammersley samples on the GPU) against a double-precision CPU integration of
+// the same integral with 16,384 samples, at 64 texels spread over the table; texel (x, y) must hold
+// NdotV = (x + 0.5) / N and roughness = (y + 0.5) / N, the orientation the renderer reads.
+TEST(Gl, BrdfLutMatchesACpuIntegration) {
+    const fs::path dir = test::testOutputDir("gl_brdf_lut");
+    App app = makeApp(dir);
+    constexpr int kSize = 64;
+    const Texture2D lut = computeBrdfLut(kSize, 1024);
+    const std::vector<float> texels = lut.readFloats(2);
+    double worst = 0.0;
+    for (int y = 3; y < kSize; y += 8) {
+        for (int x = 3; x < kSize; x += 8) {
+            const glm::dvec2 cpu = cpu::integrateBrdf((x + 0.5) / kSize, (y + 0.5) / kSize, 16384);
+            const size_t i = (size_t(y) * kSize + size_t(x)) * 2;
+            worst = std::max({worst, std::abs(texels[i] - cpu.x), std::abs(texels[i + 1] - cpu.y)});
+            EXPECT_NEAR(texels[i], cpu.x, 0.01)
+                << "scale at NdotV " << (x + 0.5) / kSize << ", roughness " << (y + 0.5) / kSize;
+            EXPECT_NEAR(texels[i + 1], cpu.y, 0.01)
+                << "bias at NdotV " << (x + 0.5) / kSize << ", roughness " << (y + 0.5) / kSize;
+        }
+    }
+    std::printf("BRDF LUT: worst difference from the 16k-sample CPU integral %.5f\n", worst);
+    // smooth and head-on: almost all of F0 comes back (scale near 1, bias near 0)
+    const size_t corner = (size_t(0) * kSize + size_t(kSize - 1)) * 2;
+    EXPECT_GT(texels[corner], 0.9f);
+    EXPECT_LT(texels[corner + 1], 0.05f);
     while (app.nextFrame()) {
     }
 }
