@@ -67,6 +67,9 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     startSeconds_ = context_->seconds();
 
     installDebugOutput();
+    // Cube maps filter across face edges (GL 3.2 core): every IBL map relies on it, whether it
+    // was just computed or loaded from the cache.
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     const glm::ivec2 size = context_->windowed() ? context_->framebufferSize()
                                                  : glm::ivec2(options_.width, options_.height);
     target_ =

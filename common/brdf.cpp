@@ -65,23 +65,32 @@ glm::vec3 reinhardGamma(const glm::vec3& color) {
     return glm::pow(mapped, glm::vec3(1.0f / 2.2f));
 }
 
+namespace {
+// Hammersley point i of `samples`: (i / N, the radical inverse of i in base 2).
+glm::dvec2 hammersley(int i, int samples) {
+    std::uint32_t bits = std::uint32_t(i);
+    bits = (bits << 16u) | (bits >> 16u);
+    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+    return {double(i) / samples, double(bits) * 2.3283064365386963e-10};
+}
+
+glm::dvec3 fromSpherical(double cosTheta, double phi) {
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
+}
+}  // namespace
+
 glm::dvec2 integrateBrdf(double NdotV, double roughness, int samples) {
     const glm::dvec3 V(std::sqrt(1.0 - NdotV * NdotV), 0.0, NdotV);
     const double a = roughness * roughness, k = roughness * roughness / 2.0;
     glm::dvec2 sum(0.0);
     for (int i = 0; i < samples; ++i) {
-        // Hammersley point i of `samples`: (i / N, the radical inverse of i in base 2)
-        std::uint32_t bits = std::uint32_t(i);
-        bits = (bits << 16u) | (bits >> 16u);
-        bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-        bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-        bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-        bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-        const double u = double(i) / samples, v = double(bits) * 2.3283064365386963e-10;
-        const double phi = 2.0 * M_PI * u;
-        const double cosTheta = std::sqrt((1.0 - v) / (1.0 + (a * a - 1.0) * v));
-        const double sinTheta = std::sqrt(1.0 - cosTheta * cosTheta);
-        const glm::dvec3 H(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
+        const glm::dvec2 Xi = hammersley(i, samples);
+        const double cosTheta = std::sqrt((1.0 - Xi.y) / (1.0 + (a * a - 1.0) * Xi.y));
+        const glm::dvec3 H = fromSpherical(cosTheta, 2.0 * M_PI * Xi.x);
         const glm::dvec3 L = glm::normalize(2.0 * glm::dot(V, H) * H - V);
         const double NdotL = std::max(L.z, 0.0), NdotH = std::max(H.z, 0.0);
         const double VdotH = std::max(glm::dot(V, H), 0.0);
@@ -90,6 +99,29 @@ glm::dvec2 integrateBrdf(double NdotV, double roughness, int samples) {
         const double visibility = G * VdotH / (NdotH * NdotV);
         const double Fc = std::pow(1.0 - VdotH, 5.0);
         sum += glm::dvec2((1.0 - Fc) * visibility, Fc * visibility);
+    }
+    return sum / double(samples);
+}
+
+double integrateSheen(double NdotV, double roughness, int samples) {
+    const glm::dvec3 V(std::sqrt(1.0 - NdotV * NdotV), 0.0, NdotV);
+    const double alpha = roughness * roughness;
+    const double invR = 1.0 / std::max(roughness, 0.000001);
+    double sum = 0.0;
+    for (int i = 0; i < samples; ++i) {
+        const glm::dvec2 Xi = hammersley(i, samples);
+        const double sinTheta = std::pow(Xi.y, alpha / (2.0 * alpha + 1.0));
+        const glm::dvec3 H =
+            fromSpherical(std::sqrt(std::max(0.0, 1.0 - sinTheta * sinTheta)), 2.0 * M_PI * Xi.x);
+        const glm::dvec3 L = 2.0 * glm::dot(V, H) * H - V;
+        const double NdotL = std::max(L.z, 0.0), NdotH = std::max(H.z, 0.0);
+        const double VdotH = std::max(glm::dot(V, H), 0.0);
+        if (NdotL <= 0.0) continue;
+        const double visibility =
+            std::clamp(1.0 / (4.0 * (NdotL + NdotV - NdotL * NdotV)), 0.0, 1.0);  // Ashikhmin
+        const double charlie =
+            (2.0 + invR) * std::pow(std::max(1.0 - NdotH * NdotH, 0.0), invR * 0.5) / (2.0 * M_PI);
+        sum += visibility * charlie * NdotL * VdotH;
     }
     return sum / double(samples);
 }

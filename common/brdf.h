@@ -35,6 +35,9 @@ glm::vec3 shadePointLights(const SurfacePoint& surface, const glm::vec3& cameraP
 // the GGX specular lobe at NdotV and roughness (k = roughness^2 / 2), by importance sampling
 // with `samples` Hammersley points, in double precision.
 glm::dvec2 integrateBrdf(double NdotV, double roughness, int samples);
+// The Charlie sheen term of the cookbook's LUT (its B channel): Charlie importance sampling,
+// sum of V_Ashikhmin * D_Charlie * NdotL * VdotH over the samples, divided by their count.
+double integrateSheen(double NdotV, double roughness, int samples);
 
 // Reinhard c / (c + 1), then gamma 1/2.2: what the direct-light samples write.
 glm::vec3 reinhardGamma(const glm::vec3& color);

@@ -45,7 +45,6 @@ void renderFaces(Shader& shader, const TextureCube& target, int level) {
 }  // namespace
 
 TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size) {
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     const int levels = int(std::floor(std::log2(double(size)))) + 1;
     TextureCube cube(size, levels);
     Shader shader("ibl/cubemap.vert", "ibl/equirect_to_cube.frag");
@@ -58,7 +57,6 @@ TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size)
 }
 
 TextureCube convolveIrradiance(const TextureCube& environment, int size, float sampleDelta) {
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     TextureCube irradiance(size, 1);
     Shader shader("ibl/cubemap.vert", "ibl/irradiance.frag");
     shader.set("environmentMap", 0);
@@ -70,8 +68,26 @@ TextureCube convolveIrradiance(const TextureCube& environment, int size, float s
     return irradiance;
 }
 
-Texture2D computeBrdfLut(int size, int samples) {
-    Texture2D lut(size, size, GL_RG16F);
+TextureCube prefilterSpecular(const TextureCube& environment, int size, int levels, int samples) {
+    TextureCube prefiltered(size, levels);
+    Shader shader("ibl/cubemap.vert", "ibl/prefilter.frag");
+    shader.set("environmentMap", 0);
+    shader.set("sampleCount", samples);
+    shader.set("sourceTexelSolidAngle",
+               float(4.0 * M_PI / (6.0 * double(environment.size()) * double(environment.size()))));
+    environment.bind(0);
+    for (int level = 0; level < levels; ++level) {
+        shader.set("roughness", levels > 1 ? float(level) / float(levels - 1) : 0.0f);
+        shader.set("footprintLod", float(std::log2(double(environment.size()) /
+                                                   double(std::max(1, size >> level)))));
+        renderFaces(shader, prefiltered, level);
+    }
+    return prefiltered;
+}
+
+Texture2D computeBrdfLut(int size, int samples, BrdfLutChannels channels) {
+    const bool sheen = channels == BrdfLutChannels::ScaleBiasSheen;
+    Texture2D lut(size, size, sheen ? GL_RGBA16F : GL_RG16F);
     const GlFramebuffer framebuffer;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, lut.id(), 0);
@@ -80,6 +96,7 @@ Texture2D computeBrdfLut(int size, int samples) {
     glDisable(GL_DEPTH_TEST);
     Shader shader("ibl/fullscreen.vert", "ibl/brdf_lut.frag");
     shader.set("sampleCount", samples);
+    shader.set("sheen", sheen ? 1 : 0);
     const GpuMesh quad(pbr::quad());
     quad.draw();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

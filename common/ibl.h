@@ -1,7 +1,9 @@
 #pragma once
 // Image-based lighting precomputation on the GPU, GL 3.3 fragment shaders only: an
-// equirectangular HDR environment becomes a cube map, and the cube map's diffuse irradiance is
-// convolved into a small one. Plus the skybox that draws the environment behind a scene.
+// equirectangular HDR environment becomes a cube map; from it, the diffuse irradiance and the
+// specular environment prefiltered for each roughness; and the BRDF lookup table of the split-sum
+// approximation. Plus the skybox that draws the environment behind a scene. ibl_cache.h keeps
+// the results on disk.
 #include "mesh.h"
 #include "shader.h"
 #include "texture.h"
@@ -16,9 +18,20 @@ TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size)
 // faces, one sample every `sampleDelta` radians of the hemisphere.
 TextureCube convolveIrradiance(const TextureCube& environment, int size, float sampleDelta = 0.05f);
 
-// The split-sum BRDF lookup table, `size`^2, RG16F: x = NdotV, y = roughness, both sampled at
-// texel centres ((i + 0.5) / size); R = scale, G = bias to F0; `samples` Hammersley points.
-Texture2D computeBrdfLut(int size, int samples = 1024);
+// The specular environment prefiltered with the GGX lobe: `size`^2 faces, `levels` mip levels,
+// level m for roughness m / (levels - 1), `samples` GGX importance samples a texel, each reading
+// `environment` at the mip level matching its solid angle. Level 0 (a mirror) is the environment
+// averaged over each texel's footprint.
+TextureCube prefilterSpecular(const TextureCube& environment, int size = 128, int levels = 5,
+                              int samples = 1024);
+
+// The BRDF lookup table, `size`^2: x = NdotV, y = roughness, both sampled at texel centres
+// ((i + 0.5) / size), row 0 at t = 0 (roughness near 0); `samples` Hammersley points.
+// ScaleBias: RG16F, R = scale and G = bias to F0 of the split-sum GGX integral.
+// ScaleBiasSheen: RGBA16F, and B = the cookbook's Charlie sheen integral (A = 1).
+enum class BrdfLutChannels { ScaleBias, ScaleBiasSheen };
+Texture2D computeBrdfLut(int size, int samples = 1024,
+                         BrdfLutChannels channels = BrdfLutChannels::ScaleBias);
 
 // Draws a cube map behind everything else (depth 1, LEQUAL), tone-mapped like the samples.
 class Skybox {

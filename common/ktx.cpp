@@ -1,5 +1,7 @@
 #include "ktx.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -121,14 +123,22 @@ void writeKtx(const fs::path& path, const KtxImage& image) {
     }
     std::error_code ec;
     if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-    const fs::path temporary = path.string() + ".tmp";
+    // a name of this process's own: two processes storing the same file never share a temporary
+    const fs::path temporary = path.string() + "." + std::to_string(::getpid()) + ".tmp";
     {
         std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
         file.write(out.data(), std::streamsize(out.size()));
-        if (!file) throw Error(where + "cannot write (is the folder writable?)");
+        if (!file) {
+            fs::remove(temporary, ec);
+            throw Error(where + "cannot write (is the folder writable?)");
+        }
     }
     fs::rename(temporary, path, ec);  // whole or not at all: a reader never sees half a file
-    if (ec) throw Error(where + "cannot write: " + ec.message());
+    if (ec) {
+        const std::string reason = ec.message();
+        fs::remove(temporary, ec);
+        throw Error(where + "cannot write: " + reason);
+    }
 }
 
 KtxImage readKtx(const fs::path& path) {

@@ -18,8 +18,8 @@ struct KtxImage {
     int faces = 1;   // 1, or 6 for a cube map (+X, -X, +Y, -Y, +Z, -Z)
     int levels = 1;  // mip levels, each half the size of the one before
     // images[level * faces + face]: the texels of one face of one level, tightly packed rows
-    std::vector<std::vector<std::uint8_t>> images;
-    std::map<std::string, std::string> metadata;  // KTX key/value pairs (UTF-8, no NUL)
+    std::vector<std::vector<std::uint8_t>> images{};
+    std::map<std::string, std::string> metadata{};  // KTX key/value pairs (UTF-8, no NUL)
 
     int channels() const;
     int bytesPerChannel() const;

@@ -1,8 +1,15 @@
 #pragma once
 // The tutorial's grid of spheres: nrRows x nrColumns, `spacing` apart, centred on the origin,
-// row 0 at the bottom, in the plane z (0 for the direct-light samples, -2 for the IBL ones).
+// row 0 at the bottom, in the plane z (0 for the direct-light samples, -2 for the IBL ones);
+// and the point lights in front of it.
+#include <array>
+#include <span>
+#include <string>
+
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+
+#include "shader.h"
 
 namespace pbr {
 
@@ -19,5 +26,24 @@ struct SphereGrid {
         return glm::translate(glm::mat4(1.0f), position(row, col));
     }
 };
+
+// The four point lights of the text's grid samples (01, 04, 05), at the corners of a square in
+// front of the grid.
+inline constexpr std::array<glm::vec3, 4> kGridLightPositions = {
+    glm::vec3(-10.0f, 10.0f, 10.0f),
+    glm::vec3(10.0f, 10.0f, 10.0f),
+    glm::vec3(-10.0f, -10.0f, 10.0f),
+    glm::vec3(10.0f, -10.0f, 10.0f),
+};
+
+// Sets the shaders' lightCount, lightPositions[i] and lightColors[i] (see shaders/01_lighting).
+inline void setPointLights(Shader& shader, std::span<const glm::vec3> positions,
+                           const glm::vec3& color) {
+    shader.set("lightCount", int(positions.size()));
+    for (size_t i = 0; i < positions.size(); ++i) {
+        shader.set("lightPositions[" + std::to_string(i) + "]", positions[i]);
+        shader.set("lightColors[" + std::to_string(i) + "]", color);
+    }
+}
 
 }  // namespace pbr

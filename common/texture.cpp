@@ -1,6 +1,8 @@
 #include "texture.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 
 #include "error.h"
 #include "paths.h"
@@ -113,6 +115,99 @@ std::vector<float> TextureCube::readFace(int face, int level) const {
     glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, GL_RGB, GL_FLOAT,
                   texels.data());
     return texels;
+}
+
+namespace {
+std::vector<std::uint8_t> toHalfBytes(const std::vector<float>& values) {
+    std::vector<std::uint8_t> bytes(values.size() * 2);
+    for (size_t i = 0; i < values.size(); ++i) {
+        const std::uint16_t half = floatToHalf(values[i]);
+        std::memcpy(&bytes[i * 2], &half, 2);
+    }
+    return bytes;
+}
+
+struct GlPixelFormat {
+    GLenum internalFormat, format, type;
+};
+GlPixelFormat glPixelFormat(KtxFormat format) {
+    switch (format) {
+        case KtxFormat::RG16F:
+            return {GL_RG16F, GL_RG, GL_HALF_FLOAT};
+        case KtxFormat::RGB16F:
+            return {GL_RGB16F, GL_RGB, GL_HALF_FLOAT};
+        case KtxFormat::RGBA16F:
+            return {GL_RGBA16F, GL_RGBA, GL_HALF_FLOAT};
+        case KtxFormat::RGBA32F:
+            return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
+    }
+    throw Error("unknown KTX format");
+}
+}  // namespace
+
+KtxImage Texture2D::toKtx(KtxFormat format) const {
+    KtxImage image{.format = format, .width = width_, .height = height_};
+    std::vector<float> texels = readFloats(image.channels());
+    if (image.bytesPerChannel() == 2) {
+        image.images.push_back(toHalfBytes(texels));
+    } else {
+        std::vector<std::uint8_t> bytes(texels.size() * sizeof(float));
+        std::memcpy(bytes.data(), texels.data(), bytes.size());
+        image.images.push_back(std::move(bytes));
+    }
+    return image;
+}
+
+Texture2D Texture2D::fromKtx(const KtxImage& image) {
+    if (image.faces != 1) throw Error("a cube map where a 2D texture was expected");
+    const GlPixelFormat gl = glPixelFormat(image.format);
+    Texture2D texture(image.width, image.height, gl.internalFormat);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, image.width, image.height, gl.format, gl.type,
+                    image.images[0].data());
+    return texture;
+}
+
+KtxImage TextureCube::toKtx() const {
+    KtxImage image{.format = KtxFormat::RGBA16F,
+                   .width = size_,
+                   .height = size_,
+                   .faces = 6,
+                   .levels = levels_};
+    for (int level = 0; level < levels_; ++level) {
+        for (int face = 0; face < 6; ++face) {
+            const std::vector<float> rgb = readFace(face, level);
+            std::vector<float> rgba;
+            rgba.reserve(rgb.size() / 3 * 4);
+            for (size_t i = 0; i < rgb.size(); i += 3) {
+                rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 1.0f});
+            }
+            image.images.push_back(toHalfBytes(rgba));
+        }
+    }
+    return image;
+}
+
+TextureCube TextureCube::fromKtx(const KtxImage& image) {
+    if (image.faces != 6 || image.width != image.height) {
+        throw Error("not a cube map of square faces");
+    }
+    if (image.format != KtxFormat::RGB16F && image.format != KtxFormat::RGBA16F) {
+        throw Error("a cube map must be RGB16F or RGBA16F");
+    }
+    const int expectedLevels = int(std::floor(std::log2(double(image.width)))) + 1;
+    if (image.levels > expectedLevels) throw Error("more mip levels than the size allows");
+    const GlPixelFormat gl = glPixelFormat(image.format);
+    TextureCube cube(image.width, image.levels);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    for (int level = 0; level < image.levels; ++level) {
+        const int s = std::max(1, image.width >> level);
+        for (int face = 0; face < 6; ++face) {
+            glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, 0, 0, s, s,
+                            gl.format, gl.type, image.images[size_t(level * 6 + face)].data());
+        }
+    }
+    return cube;
 }
 
 Texture2D Texture2D::load(const std::filesystem::path& path, ColorSpace colorSpace,

@@ -6,6 +6,7 @@
 
 #include "gl.h"
 #include "image.h"
+#include "ktx.h"
 
 namespace pbr {
 
@@ -31,6 +32,10 @@ public:
     Texture2D(int width, int height, GLenum internalFormat);
     // Level 0 as floats, `channels` (1-4) per texel, row 0 at t = 0.
     std::vector<float> readFloats(int channels) const;
+    // Level 0 as a KTX image of `format` (row 0 at t = 0), and back: a float texture made from
+    // level 0 of a 2D KTX image, linear, clamped, no mipmaps. Throws Error for a cube map.
+    KtxImage toKtx(KtxFormat format) const;
+    static Texture2D fromKtx(const KtxImage& image);
 
     void bind(int unit) const;
     int width() const { return width_; }
@@ -53,6 +58,10 @@ public:
     GLuint id() const { return texture_.id(); }
     // The texels of one face at one level, RGB floats, row 0 at the face's t = 0.
     std::vector<float> readFace(int face, int level) const;
+    // Every face and level as RGBA16F (alpha 1), and back (RGB16F or RGBA16F, square faces, a
+    // mip chain of halving sizes). fromKtx throws Error for anything else.
+    KtxImage toKtx() const;
+    static TextureCube fromKtx(const KtxImage& image);
 
 private:
     GlTexture texture_;

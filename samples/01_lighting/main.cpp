@@ -29,18 +29,8 @@ int main(int argc, char** argv) try {
     // frame has no light uniforms yet).
     shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
     shader.set("ao", 1.0f);
-    const std::array<glm::vec3, 4> lightPositions = {
-        glm::vec3(-10.0f, 10.0f, 10.0f),
-        glm::vec3(10.0f, 10.0f, 10.0f),
-        glm::vec3(-10.0f, -10.0f, 10.0f),
-        glm::vec3(10.0f, -10.0f, 10.0f),
-    };
-    const glm::vec3 lightColor(300.0f, 300.0f, 300.0f);
-    shader.set("lightCount", lightCount);
-    for (int i = 0; i < 4; ++i) {
-        shader.set("lightPositions[" + std::to_string(i) + "]", lightPositions[size_t(i)]);
-        shader.set("lightColors[" + std::to_string(i) + "]", lightColor);
-    }
+    const auto lightPositions = std::span(pbr::kGridLightPositions).first(size_t(lightCount));
+    pbr::setPointLights(shader, lightPositions, glm::vec3(300.0f, 300.0f, 300.0f));
 
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f};
 

@@ -22,8 +22,7 @@ int main(int argc, char** argv) try {
     const std::string frame = app.flagChoice("--tangent-frame", {"mesh", "derivatives"});
     const std::string filter = app.flagChoice("--filter", {"trilinear", "nearest"});
 
-    pbr::Shader& shader =
-        app.shader("02_lighting_textured/pbr.vert", "02_lighting_textured/pbr.frag");
+    pbr::Shader& shader = app.shader("common/pbr_tangent.vert", "02_lighting_textured/pbr.frag");
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
     const pbr::PbrTextures material = pbr::loadPbrTextures(
         app.flag("--material-dir").value_or((pbr::materialDir() / "rusted_iron").string()),
@@ -37,9 +36,8 @@ int main(int argc, char** argv) try {
     shader.set("useDerivativeTangents", frame == "derivatives" ? 1 : 0);
 
     // One light in front of the grid, set before the first frame.
-    shader.set("lightCount", 1);
-    shader.set("lightPositions[0]", glm::vec3(0.0f, 0.0f, 10.0f));
-    shader.set("lightColors[0]", glm::vec3(150.0f, 150.0f, 150.0f));
+    const glm::vec3 lightPosition(0.0f, 0.0f, 10.0f);
+    pbr::setPointLights(shader, std::span(&lightPosition, 1), glm::vec3(150.0f, 150.0f, 150.0f));
 
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f};
 

@@ -3,15 +3,12 @@
 // ambient light from it; the environment is drawn behind as a skybox. See README.md beside this
 // file.
 #include <algorithm>
-#include <array>
-#include <chrono>
-#include <string>
 
 #include "app.h"
 #include "error.h"
 #include "ibl.h"
+#include "ibl_cache.h"
 #include "mesh.h"
-#include "paths.h"
 #include "sphere_grid.h"
 
 int main(int argc, char** argv) try {
@@ -19,18 +16,15 @@ int main(int argc, char** argv) try {
                  {.name = "04_ibl_irradiance",
                   .title = "04 IBL: diffuse irradiance",
                   .cameraPosition = {0.0f, 0.0f, 21.0f},  // 23 from the grid at z = -2
-                  .flags = {{"--hdr", "FILE",
-                             "an equirectangular .hdr environment (default: the project's)"}}});
+                  .flags = pbr::iblFlags()});
 
-    // Precompute: the environment cube (512^2, mipmapped) and its irradiance (32^2).
-    const auto start = std::chrono::steady_clock::now();
-    const pbr::Texture2D equirectangular(pbr::readHdr(
-        app.flag("--hdr").value_or((pbr::environmentDir() / "sunny_courtyard.hdr").string())));
-    const pbr::TextureCube environmentMap = pbr::equirectangularToCubemap(equirectangular, 512);
-    const pbr::TextureCube irradianceMap = pbr::convolveIrradiance(environmentMap, 32);
-    glFinish();
-    app.addPrecomputeSeconds(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    // Precompute (or load from the cache): the environment cube (512^2, mipmapped) and its
+    // irradiance (32^2).
+    pbr::IblCache cache(pbr::cacheDir(app.options()));
+    pbr::IblEnvironment environment(cache, pbr::environmentFile(app.options()));
+    const pbr::TextureCube& environmentMap = environment.environmentMap();
+    const pbr::TextureCube irradianceMap = environment.irradianceMap(32);
+    app.addPrecomputeSeconds(cache.computeSeconds());
 
     pbr::Shader& shader = app.shader("common/pbr.vert", "04_ibl_irradiance/pbr.frag");
     pbr::Skybox skybox;
@@ -39,17 +33,7 @@ int main(int argc, char** argv) try {
     shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
     shader.set("ao", 1.0f);
     shader.set("irradianceMap", 0);
-    const std::array<glm::vec3, 4> lightPositions = {
-        glm::vec3(-10.0f, 10.0f, 10.0f),
-        glm::vec3(10.0f, 10.0f, 10.0f),
-        glm::vec3(-10.0f, -10.0f, 10.0f),
-        glm::vec3(10.0f, -10.0f, 10.0f),
-    };
-    shader.set("lightCount", 4);
-    for (int i = 0; i < 4; ++i) {
-        shader.set("lightPositions[" + std::to_string(i) + "]", lightPositions[size_t(i)]);
-        shader.set("lightColors[" + std::to_string(i) + "]", glm::vec3(300.0f));
-    }
+    pbr::setPointLights(shader, pbr::kGridLightPositions, glm::vec3(300.0f));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
 
     glEnable(GL_DEPTH_TEST);

@@ -6,14 +6,6 @@ in vec3 WorldPos;
 in vec3 Normal;
 in vec4 Tangent;
 
-// material maps; albedoMap and aoMap are sRGB textures, so the sampler returns linear values
-uniform sampler2D albedoMap;
-uniform sampler2D normalMap;
-uniform sampler2D metallicMap;
-uniform sampler2D roughnessMap;
-uniform sampler2D aoMap;
-uniform bool useDerivativeTangents;  // the text's screen-space tangent frame instead of the mesh's
-
 // lights
 const int MAX_LIGHTS = 4;
 uniform int lightCount;
@@ -23,25 +15,13 @@ uniform vec3 lightColors[MAX_LIGHTS];
 uniform vec3 camPos;
 
 #include "brdf.glsl"
-#include "normal_mapping.glsl"
+#include "material_maps.glsl"
 #include "tonemap.glsl"
-
-vec3 getNormalFromMap()
-{
-    vec3 tangentNormal = texture(normalMap, TexCoords).xyz * 2.0 - 1.0;
-    if (useDerivativeTangents)
-        return normalFromMapWithDerivatives(tangentNormal, Normal, WorldPos, TexCoords);
-    return normalFromMapWithTangent(tangentNormal, Normal, Tangent);
-}
 
 void main()
 {
-    vec3 albedo = texture(albedoMap, TexCoords).rgb;  // already linear: no pow(2.2) needed
-    float metallic = texture(metallicMap, TexCoords).r;
-    float roughness = texture(roughnessMap, TexCoords).r;
-    float ao = texture(aoMap, TexCoords).r;
-
-    vec3 N = getNormalFromMap();
+    Material m = readMaterialMaps();
+    vec3 N = m.N;
     vec3 V = normalize(camPos - WorldPos);
 
     vec3 Lo = vec3(0.0);
@@ -50,10 +30,10 @@ void main()
         vec3 L = normalize(lightPositions[i] - WorldPos);
         float distance = length(lightPositions[i] - WorldPos);
         vec3 radiance = lightColors[i] / (distance * distance);
-        Lo += directLight(N, V, L, radiance, albedo, metallic, roughness);
+        Lo += directLight(N, V, L, radiance, m.albedo, m.metallic, m.roughness);
     }
 
-    vec3 ambient = vec3(0.03) * albedo * ao;
+    vec3 ambient = vec3(0.03) * m.albedo * m.ao;
     vec3 color = gammaCorrect(reinhard(ambient + Lo));
     FragColor = vec4(color, 1.0);
 }

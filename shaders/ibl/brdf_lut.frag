@@ -1,33 +1,17 @@
 #version 330 core
-// The split-sum BRDF lookup table (Karis, "Real Shading in Unreal Engine 4"): for NdotV along x
-// and roughness along y, the scale (R) and bias (G) to F0 of the GGX specular integral, by
-// importance sampling with Hammersley points. Mirrored on the CPU by pbr::cpu::integrateBrdf.
+// The BRDF lookup table. For NdotV along x and roughness along y (texel centres):
+// R, G = scale and bias to F0 of the split-sum GGX specular integral (Karis, "Real Shading in
+// Unreal Engine 4"), by GGX importance sampling; B (when `sheen` is on) = the Charlie sheen
+// integral of the cookbook's "precompute BRDF LUT" recipe (Charlie distribution, Ashikhmin
+// visibility, as in Filament), by Charlie importance sampling and the cookbook's estimator.
+// Mirrored on the CPU by pbr::cpu::integrateBrdf and pbr::cpu::integrateSheen.
 out vec4 FragColor;
 in vec2 TexCoords;
 
 uniform int sampleCount;
+uniform bool sheen;
 
-const float PI = 3.14159265359;
-
-vec2 hammersley(uint i, uint N)
-{
-    uint bits = (i << 16u) | (i >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return vec2(float(i) / float(N), float(bits) * 2.3283064365386963e-10);
-}
-
-// A half vector around +Z with the GGX distribution of `roughness` (alpha = roughness^2).
-vec3 importanceSampleGGX(vec2 Xi, float roughness)
-{
-    float a = roughness * roughness;
-    float phi = 2.0 * PI * Xi.x;
-    float cosTheta = sqrt((1.0 - Xi.y) / (1.0 + (a * a - 1.0) * Xi.y));
-    float sinTheta = sqrt(1.0 - cosTheta * cosTheta);
-    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
-}
+#include "importance_sampling.glsl"
 
 // Schlick-GGX with k = roughness^2 / 2, the remapping for image-based lighting.
 float geometrySmithIbl(float NdotV, float NdotL, float roughness)
@@ -61,7 +45,52 @@ vec2 integrateBRDF(float NdotV, float roughness)
     return vec2(A, B) / float(count);
 }
 
+// Ashikhmin's visibility for cloth-like sheen.
+float V_Ashikhmin(float NdotL, float NdotV)
+{
+    return clamp(1.0 / (4.0 * (NdotL + NdotV - NdotL * NdotV)), 0.0, 1.0);
+}
+
+// The "Charlie" sheen distribution (Estevez and Kulla), sheenRoughness in (0, 1].
+float D_Charlie(float sheenRoughness, float NdotH)
+{
+    float invR = 1.0 / max(sheenRoughness, 0.000001);
+    float sin2h = max(1.0 - NdotH * NdotH, 0.0);
+    return (2.0 + invR) * pow(sin2h, invR * 0.5) / (2.0 * PI);
+}
+
+// A half vector around +Z from the Charlie distribution of `roughness` (alpha = roughness^2).
+vec3 importanceSampleCharlie(vec2 Xi, float roughness)
+{
+    float alpha = roughness * roughness;
+    float phi = 2.0 * PI * Xi.x;
+    float sinTheta = pow(Xi.y, alpha / (2.0 * alpha + 1.0));
+    float cosTheta = sqrt(1.0 - sinTheta * sinTheta);
+    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
+}
+
+float integrateSheen(float NdotV, float roughness)
+{
+    vec3 V = vec3(sqrt(1.0 - NdotV * NdotV), 0.0, NdotV);
+    float sum = 0.0;
+    uint count = uint(sampleCount);
+    for (uint i = 0u; i < count; ++i)
+    {
+        vec3 H = importanceSampleCharlie(hammersley(i, count), roughness);
+        vec3 L = 2.0 * dot(V, H) * H - V;
+        float NdotL = max(L.z, 0.0);
+        float NdotH = max(H.z, 0.0);
+        float VdotH = max(dot(V, H), 0.0);
+        if (NdotL > 0.0)
+            sum += V_Ashikhmin(NdotL, NdotV) * D_Charlie(roughness, NdotH) * NdotL * VdotH;
+    }
+    return sum / float(count);
+}
+
 void main()
 {
-    FragColor = vec4(integrateBRDF(TexCoords.x, TexCoords.y), 0.0, 1.0);
+    float NdotV = TexCoords.x;
+    float roughness = TexCoords.y;
+    FragColor = vec4(integrateBRDF(NdotV, roughness), sheen ? integrateSheen(NdotV, roughness) : 0.0,
+                     1.0);
 }

@@ -1,4 +1,5 @@
 #version 330 core
+// The vertex stage of the textured samples (02, 05 --textured): pbr.vert plus the tangent frame.
 layout (location = 0) in vec3 aPos;
 layout (location = 1) in vec2 aTexCoords;
 layout (location = 2) in vec3 aNormal;

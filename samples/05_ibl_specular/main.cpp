@@ -1,0 +1,105 @@
+// 05 ibl_specular: LearnOpenGL "PBR / IBL / Specular IBL". The split-sum approximation: the
+// environment prefiltered for each roughness (one mip level each) and the BRDF lookup table join
+// 04's irradiance, so the grid's spheres reflect their surroundings. --textured shows the
+// project's five material sets instead. See README.md beside this file.
+#include <algorithm>
+#include <array>
+
+#include "app.h"
+#include "error.h"
+#include "ibl.h"
+#include "ibl_cache.h"
+#include "mesh.h"
+#include "paths.h"
+#include "sphere_grid.h"
+#include "texture.h"
+
+namespace {
+// The --textured row, left to right, in the text's order.
+constexpr std::array<const char*, 5> kMaterials = {"rusted_iron", "gold", "grass", "plastic",
+                                                   "wall"};
+}  // namespace
+
+int main(int argc, char** argv) try {
+    std::vector<pbr::FlagSpec> flags = pbr::iblFlags();
+    flags.push_back({"--textured", "", "five spheres in the project's material sets"});
+    pbr::App app(argc, argv,
+                 {.name = "05_ibl_specular",
+                  .title = "05 IBL: specular",
+                  .cameraPosition = {0.0f, 0.0f, 21.0f},  // 23 from the grid at z = -2
+                  .flags = flags});
+    const bool textured = app.options().has("--textured");
+    if (textured) app.setDefaultCamera({0.0f, 0.0f, 8.0f});  // the row of five, 10 away
+
+    // Precompute (or load from the cache): environment 512^2, irradiance 32^2, prefiltered
+    // specular 128^2 with 5 mips (roughness = mip / 4), BRDF LUT 512^2 RG16F; 1024 samples each.
+    pbr::IblCache cache(pbr::cacheDir(app.options()));
+    pbr::IblEnvironment environment(cache, pbr::environmentFile(app.options()));
+    const pbr::TextureCube& environmentMap = environment.environmentMap();
+    const pbr::TextureCube irradianceMap = environment.irradianceMap(32);
+    const pbr::TextureCube prefilterMap = environment.prefilteredMap(128, 5, 1024);
+    const pbr::Texture2D brdfLUT = pbr::brdfLut(cache, 512, 1024, pbr::BrdfLutChannels::ScaleBias);
+    app.addPrecomputeSeconds(cache.computeSeconds());
+
+    pbr::Shader& shader =
+        textured ? app.shader("common/pbr_tangent.vert", "05_ibl_specular/pbr_textured.frag")
+                 : app.shader("common/pbr.vert", "05_ibl_specular/pbr.frag");
+    pbr::Skybox skybox;
+    const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
+    std::vector<pbr::PbrTextures> materials;
+    if (textured) {
+        for (const char* name : kMaterials) {
+            materials.push_back(pbr::loadPbrTextures(pbr::materialDir() / name));
+        }
+        shader.set("albedoMap", 0);
+        shader.set("normalMap", 1);
+        shader.set("metallicMap", 2);
+        shader.set("roughnessMap", 3);
+        shader.set("aoMap", 4);
+    } else {
+        shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
+        shader.set("ao", 1.0f);
+    }
+    shader.set("irradianceMap", 5);
+    shader.set("prefilterMap", 6);
+    shader.set("brdfLUT", 7);
+    pbr::setPointLights(shader, pbr::kGridLightPositions, glm::vec3(300.0f));
+    const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
+    const pbr::SphereGrid row{.nrRows = 1, .nrColumns = 5, .spacing = 2.5f, .z = -2.0f};
+
+    glEnable(GL_DEPTH_TEST);
+    while (app.nextFrame()) {
+        glClearColor(0.2f, 0.3f, 0.3f, 1.0f);  // hidden by the skybox wherever it is drawn
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+        shader.use();
+        shader.set("projection", app.projection());
+        shader.set("view", app.view());
+        shader.set("camPos", app.camera().position());
+        irradianceMap.bind(5);
+        prefilterMap.bind(6);
+        brdfLUT.bind(7);
+        if (textured) {
+            for (int col = 0; col < row.nrColumns; ++col) {
+                materials[size_t(col)].bind();
+                shader.setModel(row.model(0, col));
+                sphere.draw();
+            }
+        } else {
+            for (int r = 0; r < grid.nrRows; ++r) {
+                shader.set("metallic", float(r) / float(grid.nrRows));
+                for (int col = 0; col < grid.nrColumns; ++col) {
+                    shader.set("roughness",
+                               std::clamp(float(col) / float(grid.nrColumns), 0.05f, 1.0f));
+                    shader.setModel(grid.model(r, col));
+                    sphere.draw();
+                }
+            }
+        }
+
+        skybox.draw(environmentMap, app.view(), app.projection());  // last: only where nothing is
+    }
+    return 0;
+} catch (...) {
+    return pbr::reportFailure();
+}

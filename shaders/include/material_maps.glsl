@@ -1,0 +1,35 @@
+// The five maps of a PBR material folder (see common/texture.h), read at TexCoords. The including
+// shader declares the inputs TexCoords, WorldPos, Normal and Tangent.
+#include "normal_mapping.glsl"
+
+// albedoMap and aoMap are sRGB textures, so the sampler returns linear values
+uniform sampler2D albedoMap;
+uniform sampler2D normalMap;
+uniform sampler2D metallicMap;
+uniform sampler2D roughnessMap;
+uniform sampler2D aoMap;
+uniform bool useDerivativeTangents;  // the text's screen-space tangent frame instead of the mesh's
+
+struct Material
+{
+    vec3 albedo;
+    float metallic;
+    float roughness;
+    float ao;
+    vec3 N;  // the world-space normal, from the normal map
+};
+
+Material readMaterialMaps()
+{
+    Material m;
+    m.albedo = texture(albedoMap, TexCoords).rgb;  // already linear: no pow(2.2) needed
+    m.metallic = texture(metallicMap, TexCoords).r;
+    m.roughness = texture(roughnessMap, TexCoords).r;
+    m.ao = texture(aoMap, TexCoords).r;
+    vec3 tangentNormal = texture(normalMap, TexCoords).xyz * 2.0 - 1.0;
+    if (useDerivativeTangents)
+        m.N = normalFromMapWithDerivatives(tangentNormal, Normal, WorldPos, TexCoords);
+    else
+        m.N = normalFromMapWithTangent(tangentNormal, Normal, Tangent);
+    return m;
+}
