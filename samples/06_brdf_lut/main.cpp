@@ -31,9 +31,12 @@ int main(int argc, char** argv) try {
          .title = "06 BRDF LUT: GGX scale and bias (left), Charlie sheen x 8 (right)",
          .flags = {
              {"--hdr", "FILE", "also bake this environment's irradiance and prefiltered maps"},
-             {"--ktx-dir", "DIR", "where the .ktx files go (default: .)"},
+             {"--ktx-dir", "DIR", "where the .ktx files go (default: beside --output, else .)"},
              {"--no-cache", "", "compute the maps even when the cache holds them"}}});
-    const std::filesystem::path ktxDir = app.flag("--ktx-dir").value_or(".");
+    const std::filesystem::path output = app.options().output;
+    const std::filesystem::path ktxDir =
+        app.flag("--ktx-dir")
+            .value_or(output.has_parent_path() ? output.parent_path().string() : ".");
 
     pbr::IblCache cache(pbr::cacheDir(app.options()));
     const pbr::Texture2D brdfLUT =

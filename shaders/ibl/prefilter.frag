@@ -29,12 +29,13 @@ void main()
         return;
     }
 
+    mat3 toWorld = tangentFrame(N);
     vec3 prefilteredColor = vec3(0.0);
     float totalWeight = 0.0;
     uint count = uint(sampleCount);
     for (uint i = 0u; i < count; ++i)
     {
-        vec3 H = tangentToWorld(importanceSampleGGX(hammersley(i, count), roughness), N);
+        vec3 H = normalize(toWorld * importanceSampleGGX(hammersley(i, count), roughness));
         vec3 L = normalize(2.0 * dot(V, H) * H - V);
         float NdotL = dot(N, L);
         if (NdotL > 0.0)

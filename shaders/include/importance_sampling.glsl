@@ -24,11 +24,11 @@ vec3 importanceSampleGGX(vec2 Xi, float roughness)
     return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
 }
 
-// A vector given around +Z, turned so that +Z becomes N.
-vec3 tangentToWorld(vec3 v, vec3 N)
+// The rotation taking vectors given around +Z to vectors around N (made once per texel).
+mat3 tangentFrame(vec3 N)
 {
     vec3 up = abs(N.z) < 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
     vec3 tangent = normalize(cross(up, N));
     vec3 bitangent = cross(N, tangent);
-    return normalize(tangent * v.x + bitangent * v.y + N * v.z);
+    return mat3(tangent, bitangent, N);
 }

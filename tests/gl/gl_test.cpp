@@ -3,11 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <fstream>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "app.h"
 #include "brdf.h"
 #include "error.h"
+#include "framebuffer.h"
 #include "ibl.h"
 #include "mesh.h"
 #include "paths.h"
@@ -161,29 +165,231 @@ TEST(Gl, IrradianceOfKnownEnvironments) {
 // The BRDF LUT (1024 Hammersley samples on the GPU) against a double-precision CPU integration of
 // the same integral with 16,384 samples, at 64 texels spread over the table; texel (x, y) must hold
 // NdotV = (x + 0.5) / N and roughness = (y + 0.5) / N, the orientation the renderer reads.
+// The B channel (the cookbook's Charlie sheen estimator, values up to about 0.1) likewise, within
+// 0.002.
 TEST(Gl, BrdfLutMatchesACpuIntegration) {
     const fs::path dir = test::testOutputDir("gl_brdf_lut");
     App app = makeApp(dir);
     constexpr int kSize = 64;
-    const Texture2D lut = computeBrdfLut(kSize, 1024);
-    const std::vector<float> texels = lut.readFloats(2);
-    double worst = 0.0;
+    const Texture2D lut = computeBrdfLut(kSize, 1024, BrdfLutChannels::ScaleBiasSheen);
+    const std::vector<float> texels = lut.readFloats(4);
+    double worst = 0.0, worstSheen = 0.0, largestSheen = 0.0;
     for (int y = 3; y < kSize; y += 8) {
         for (int x = 3; x < kSize; x += 8) {
-            const glm::dvec2 cpu = cpu::integrateBrdf((x + 0.5) / kSize, (y + 0.5) / kSize, 16384);
-            const size_t i = (size_t(y) * kSize + size_t(x)) * 2;
+            const double NdotV = (x + 0.5) / kSize, roughness = (y + 0.5) / kSize;
+            const glm::dvec2 cpu = cpu::integrateBrdf(NdotV, roughness, 16384);
+            const double sheen = cpu::integrateSheen(NdotV, roughness, 16384);
+            const size_t i = (size_t(y) * kSize + size_t(x)) * 4;
             worst = std::max({worst, std::abs(texels[i] - cpu.x), std::abs(texels[i + 1] - cpu.y)});
+            worstSheen = std::max(worstSheen, std::abs(texels[i + 2] - sheen));
+            largestSheen = std::max(largestSheen, sheen);
             EXPECT_NEAR(texels[i], cpu.x, 0.01)
-                << "scale at NdotV " << (x + 0.5) / kSize << ", roughness " << (y + 0.5) / kSize;
+                << "scale at NdotV " << NdotV << ", roughness " << roughness;
             EXPECT_NEAR(texels[i + 1], cpu.y, 0.01)
-                << "bias at NdotV " << (x + 0.5) / kSize << ", roughness " << (y + 0.5) / kSize;
+                << "bias at NdotV " << NdotV << ", roughness " << roughness;
+            EXPECT_NEAR(texels[i + 2], sheen, 0.002)
+                << "sheen at NdotV " << NdotV << ", roughness " << roughness;
         }
     }
-    std::printf("BRDF LUT: worst difference from the 16k-sample CPU integral %.5f\n", worst);
+    std::printf("BRDF LUT: worst difference from the 16k-sample CPU integral %.5f (R, G), "
+                "%.5f (B, largest value %.4f)\n",
+                worst, worstSheen, largestSheen);
+    EXPECT_GT(largestSheen, 0.02);  // the comparison above is not between two zeros
     // smooth and head-on: almost all of F0 comes back (scale near 1, bias near 0)
-    const size_t corner = (size_t(0) * kSize + size_t(kSize - 1)) * 2;
+    const size_t corner = (size_t(0) * kSize + size_t(kSize - 1)) * 4;
     EXPECT_GT(texels[corner], 0.9f);
     EXPECT_LT(texels[corner + 1], 0.05f);
+    while (app.nextFrame()) {
+    }
+}
+
+// The prefiltered map's level 0 is the mirror (roughness 0): the environment itself, averaged
+// over each texel's footprint. Its 128^2 texel centres coincide with those of the 512^2
+// environment's mip level 2 (each the box average of 4 x 4 source texels), so the two must agree
+// to half-float precision: 0.1 % relative (a half has an 11-bit significand: 0.05 %), over the
+// project's environment, sun (thousands of times the sky) included.
+TEST(Gl, PrefilteredLevelZeroIsTheSource) {
+    const fs::path dir = test::testOutputDir("gl_prefilter");
+    App app = makeApp(dir);
+    const TextureCube environment = equirectangularToCubemap(
+        Texture2D(readHdr(environmentDir() / "sunny_courtyard.hdr")), 512);
+    const TextureCube prefiltered = prefilterSpecular(environment, 128, 5, 64);
+    float brightest = 0.0f, worst = 0.0f;
+    for (int face = 0; face < 6; ++face) {
+        const std::vector<float> mirror = prefiltered.readFace(face, 0);
+        const std::vector<float> source = environment.readFace(face, 2);
+        ASSERT_EQ(mirror.size(), source.size());
+        for (size_t i = 0; i < mirror.size(); ++i) {
+            brightest = std::max(brightest, source[i]);
+            worst = std::max(worst, std::abs(mirror[i] - source[i]) / std::max(source[i], 1e-3f));
+            ASSERT_NEAR(mirror[i], source[i], 1e-3f * std::max(source[i], 1e-3f))
+                << "face " << face << ", texel " << i / 3 << ", channel " << i % 3;
+        }
+    }
+    std::printf("prefiltered level 0: worst relative difference %.6f, brightest texel %.0f\n",
+                worst, brightest);
+    EXPECT_GT(brightest, 100.0f);  // the sun is in the comparison
+    while (app.nextFrame()) {
+    }
+}
+
+// White furnace, through sample 05's own shader and IBL maps: an environment of radiance 1 all
+// round and white spheres (albedo 1, ao 1, no point lights). A lossless surface would come out 1
+// everywhere. The split-sum GGX is single-scattering: it drops the light that bounces between
+// microfacets more than once, nothing for a mirror and more and more with roughness and towards
+// grazing angles (measured here: a white metal of roughness 1 keeps 31-54 %, 37 % on average).
+// The expected value is derived per pixel from a 16k-sample CPU integration of that same
+// single-scattering integral (A, B at the pixel's NdotV and roughness), not assumed:
+//   metallic 1: F = fresnelSchlickRoughness(NdotV, F0 = 1) = 1, so L = A + B = E(NdotV, roughness),
+//               the directional albedo of single-scattering GGX;
+//   metallic 0: F0 = 0.04, L = (1 - F) + F * A + B (which exceeds 1 towards the rim of smooth
+//               spheres, up to 1.24: the text's kD = 1 - F does not conserve energy there).
+// The band each pixel must lie in: that value +- 0.02 (the LUT is 16-bit at 256^2 texels and
+// 1024 samples, the irradiance within 1 %). The spheres are drawn into a float target and the
+// tone map is undone exactly. Pixels whose NdotV is below 0.15 are left out: there the 64 x 64
+// sphere's interpolated normals part from the CPU's exact sphere.
+TEST(Gl, WhiteFurnace) {
+    const fs::path dir = test::testOutputDir("gl_furnace");
+    App app = makeApp(dir);
+    const Texture2D white(HdrImage{64, 32, std::vector<float>(64 * 32 * 3, 1.0f)});
+    const TextureCube environment = equirectangularToCubemap(white, 64);
+    const TextureCube irradiance = convolveIrradiance(environment, 8);
+    const TextureCube prefiltered = prefilterSpecular(environment, 32, 5, 256);
+    const Texture2D lut = computeBrdfLut(256, 1024);
+
+    constexpr int kWidth = 880, kHeight = 320, kColumns = 11;
+    constexpr double kFovY = glm::radians(45.0);
+    const glm::dvec3 camera(0.0, 0.0, 17.0);
+    auto centre = [](int metallic, int col) {
+        return glm::dvec3((col - kColumns / 2) * 2.2, metallic == 1 ? 1.25 : -1.25, 0.0);
+    };
+    auto roughnessOf = [](int col) { return double(col) / double(kColumns - 1); };
+
+    // A float render target of our own (the App's is 8-bit).
+    GlFramebuffer framebuffer;
+    GlRenderbuffer color, depth;
+    glBindRenderbuffer(GL_RENDERBUFFER, color.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, kWidth, kHeight);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kWidth, kHeight);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+    requireCompleteFramebuffer("furnace target");
+    glViewport(0, 0, kWidth, kHeight);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+
+    Shader& shader = app.shader("common/pbr.vert", "05_ibl_specular/pbr.frag");
+    shader.use();
+    shader.set("projection",
+               glm::perspective(float(kFovY), float(kWidth) / float(kHeight), 0.1f, 100.0f));
+    shader.set("view", glm::lookAt(glm::vec3(camera), glm::vec3(0.0f), glm::vec3(0, 1, 0)));
+    shader.set("camPos", glm::vec3(camera));
+    shader.set("albedo", glm::vec3(1.0f));
+    shader.set("ao", 1.0f);
+    shader.set("lightCount", 0);
+    shader.set("irradianceMap", 0);
+    shader.set("prefilterMap", 1);
+    shader.set("brdfLUT", 2);
+    irradiance.bind(0);
+    prefiltered.bind(1);
+    lut.bind(2);
+    const GpuMesh sphere(uvSphere(64, 64));
+    for (int metallic = 0; metallic < 2; ++metallic) {
+        for (int col = 0; col < kColumns; ++col) {
+            shader.set("metallic", float(metallic));
+            shader.set("roughness", float(roughnessOf(col)));
+            shader.setModel(glm::translate(glm::mat4(1.0f), glm::vec3(centre(metallic, col))));
+            sphere.draw();
+        }
+    }
+    std::vector<float> pixels(size_t(kWidth) * kHeight * 4);
+    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, pixels.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    // A (NdotV) table of the CPU integral per roughness, 16k samples, read linearly.
+    constexpr int kTable = 128;
+    std::vector<std::vector<glm::dvec2>> table(kColumns);
+    for (int col = 0; col < kColumns; ++col) {
+        for (int i = 0; i <= kTable; ++i) {
+            table[size_t(col)].push_back(
+                cpu::integrateBrdf(std::max(double(i) / kTable, 1e-4), roughnessOf(col), 16384));
+        }
+    }
+    auto scaleBias = [&](int col, double NdotV) {
+        const double x = NdotV * kTable;
+        const int i = std::min(int(x), kTable - 1);
+        return glm::mix(table[size_t(col)][size_t(i)], table[size_t(col)][size_t(i) + 1], x - i);
+    };
+
+    // Each pixel's ray against every sphere (the nearest hit wins: a neighbour can hide a rim).
+    struct Stats {
+        double lowest = 1e9, highest = -1e9, lowestExpected = 1e9, sum = 0.0;
+        int count = 0, outside = 0;
+    };
+    std::array<Stats, 2 * kColumns> stats{};
+    const double tanHalf = std::tan(kFovY / 2.0), aspect = double(kWidth) / kHeight;
+    for (int py = 0; py < kHeight; ++py) {
+        for (int px = 0; px < kWidth; ++px) {
+            const glm::dvec3 ray =
+                glm::normalize(glm::dvec3((2.0 * (px + 0.5) / kWidth - 1.0) * tanHalf * aspect,
+                                          (2.0 * (py + 0.5) / kHeight - 1.0) * tanHalf, -1.0));
+            double nearest = 1e9;
+            int metallic = -1, col = -1;
+            for (int m = 0; m < 2; ++m) {
+                for (int c = 0; c < kColumns; ++c) {
+                    const glm::dvec3 oc = camera - centre(m, c);
+                    const double b = glm::dot(oc, ray), d = b * b - glm::dot(oc, oc) + 1.0;
+                    if (d > 0.0 && -b - std::sqrt(d) < nearest) {
+                        nearest = -b - std::sqrt(d);
+                        metallic = m;
+                        col = c;
+                    }
+                }
+            }
+            if (metallic < 0) continue;
+            const glm::dvec3 N = glm::normalize(camera + ray * nearest - centre(metallic, col));
+            const double NdotV = glm::dot(N, -ray);
+            if (NdotV < 0.15) continue;
+            const double roughness = roughnessOf(col);
+            const glm::dvec2 ab = scaleBias(col, NdotV);
+            const double F0 = metallic == 1 ? 1.0 : 0.04;
+            const double F = F0 + (std::max(1.0 - roughness, F0) - F0) * std::pow(1.0 - NdotV, 5.0);
+            const double expected = (1.0 - F) * (1.0 - metallic) + F * ab.x + ab.y;
+            const float* p = &pixels[(size_t(py) * kWidth + size_t(px)) * 4];
+            ASSERT_EQ(p[3], 1.0f) << "no sphere drawn at pixel " << px << ", " << py;
+            const double x = std::pow(double(p[0]), 2.2);  // undo gamma 1/2.2, then Reinhard
+            const double rendered = x / (1.0 - x);
+            Stats& s = stats[size_t(metallic * kColumns + col)];
+            if (std::abs(rendered - expected) > 0.02) ++s.outside;
+            s.lowest = std::min(s.lowest, rendered);
+            s.highest = std::max(s.highest, rendered);
+            s.lowestExpected = std::min(s.lowestExpected, expected);
+            s.sum += rendered;
+            ++s.count;
+        }
+    }
+    for (int metallic = 0; metallic < 2; ++metallic) {
+        for (int col = 0; col < kColumns; ++col) {
+            const Stats& s = stats[size_t(metallic * kColumns + col)];
+            ASSERT_GT(s.count, 500) << "sphere " << metallic << ", " << col << " barely visible";
+            EXPECT_EQ(s.outside, 0) << s.outside << " of " << s.count
+                                    << " pixels of the sphere metallic " << metallic
+                                    << ", roughness " << roughnessOf(col)
+                                    << " outside the derived band";
+            std::printf("furnace metallic %d roughness %.1f: %.3f..%.3f (mean %.3f; CPU lowest "
+                        "%.3f)\n",
+                        metallic, roughnessOf(col), s.lowest, s.highest, s.sum / s.count,
+                        s.lowestExpected);
+        }
+    }
+    // A white mirror in a white furnace vanishes: exactly 1 all over.
+    EXPECT_NEAR(stats[kColumns].lowest, 1.0, 0.02);
+    EXPECT_NEAR(stats[kColumns].highest, 1.0, 0.02);
+    // Single scattering loses energy with roughness: the roughest metal keeps well under 90 %.
+    EXPECT_LT(stats[2 * kColumns - 1].sum / stats[2 * kColumns - 1].count, 0.9);
     while (app.nextFrame()) {
     }
 }

@@ -42,8 +42,10 @@ void expectNotBlank(const Image& image, double minShare) {
 // Each golden is checked on every offscreen backend this build has: they must draw the same.
 class GoldenOnBackend : public ::testing::TestWithParam<std::string> {
 protected:
-    SampleRender render(const std::string& sample, std::vector<std::string> args = {}) {
-        const fs::path dir = testOutputDir("golden_" + sample + "_" + GetParam());
+    // `tag` keeps the folders of two tests of one sample apart (ctest runs them in parallel).
+    SampleRender render(const std::string& sample, std::vector<std::string> args = {},
+                        const std::string& tag = "") {
+        const fs::path dir = testOutputDir("golden_" + sample + tag + "_" + GetParam());
         args.insert(args.end(), {"--backend", GetParam()});
         return renderSample(sample, dir / (sample + ".png"), args);
     }
@@ -71,8 +73,10 @@ TEST_P(GoldenOnBackend, LightingTextured02MatchesGolden) {
 TEST_P(GoldenOnBackend, MaterialSetsMatchGoldens) {
     for (const char* set : {"gold", "grass", "plastic", "wall"}) {
         const SampleRender rendered =
-            render("02_lighting_textured", {"--material-dir", (materialDir() / set).string(),
-                                            "--size", "480x270", "--camera", "0,0,3"});
+            render("02_lighting_textured",
+                   {"--material-dir", (materialDir() / set).string(), "--size", "480x270",
+                    "--camera", "0,0,3"},
+                   "_sets");
         expectCleanRun(rendered);
         expectNotBlank(readImage(rendered.image, 3), 0.3);
         const fs::path kept = rendered.image.parent_path() / (std::string("02_") + set + ".png");
@@ -118,6 +122,28 @@ TEST_P(GoldenOnBackend, IblIrradiance04MatchesGolden) {
     const SampleRender rendered = render("04_ibl_irradiance");
     expectCleanRun(rendered);
     EXPECT_TRUE(matchesGolden("04_ibl_irradiance", rendered));
+}
+
+TEST_P(GoldenOnBackend, IblSpecular05MatchesGolden) {
+    const SampleRender rendered = render("05_ibl_specular");
+    expectCleanRun(rendered);
+    EXPECT_TRUE(matchesGolden("05_ibl_specular", rendered));
+}
+
+TEST_P(GoldenOnBackend, IblSpecular05TexturedMatchesGolden) {
+    const SampleRender rendered = render("05_ibl_specular", {"--textured"}, "_textured");
+    expectCleanRun(rendered);
+    const fs::path kept = rendered.image.parent_path() / "05_ibl_specular_textured.png";
+    fs::rename(rendered.image, kept);
+    EXPECT_TRUE(matchesGolden("05_ibl_specular_textured",
+                              {rendered.run, kept, rendered.backend, rendered.renderer}));
+}
+
+TEST_P(GoldenOnBackend, BrdfLut06MatchesGolden) {
+    const SampleRender rendered = render("06_brdf_lut");
+    expectCleanRun(rendered);
+    expectNotBlank(readImage(rendered.image, 3), 0.3);
+    EXPECT_TRUE(matchesGolden("06_brdf_lut", rendered));
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, GoldenOnBackend, ::testing::ValuesIn(offscreenBackends()),
@@ -203,7 +229,8 @@ TEST(Golden, HeadlessOutputIsBitIdentical) {
     const fs::path dir = testOutputDir("golden_determinism");
     const std::vector<std::string> args = {"--size", "640x360"};
     for (const std::string sample :
-         {"01_lighting", "02_lighting_textured", "03_gltf_unlit", "04_ibl_irradiance"}) {
+         {"01_lighting", "02_lighting_textured", "03_gltf_unlit", "04_ibl_irradiance",
+          "05_ibl_specular", "06_brdf_lut"}) {
         const SampleRender first = renderSample(sample, dir / (sample + ".first.png"), args);
         const SampleRender second = renderSample(sample, dir / (sample + ".second.png"), args);
         expectCleanRun(first);

@@ -1,0 +1,154 @@
+// The IBL cache on disk, through sample 05 run as a user runs it: the first start computes and
+// stores every map, the second loads them and draws the same bytes, --no-cache computes again
+// without touching the files, and a damaged or stale file is named in one line, recomputed,
+// replaced, and never drawn. And sample 06's KTX files: what they hold and which way round.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <regex>
+
+#include "brdf.h"
+#include "image.h"
+#include "ktx.h"
+#include "paths.h"
+#include "support/golden.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kMaps[] = {"sunny_courtyard.environment.ktx", "sunny_courtyard.irradiance.ktx",
+                             "sunny_courtyard.prefiltered.ktx", "brdf_lut_512.ktx"};
+
+// Runs 05 (320x180, one frame, --benchmark for its precompute figure) with `cache` as the cache.
+struct Run05 {
+    RunResult run;
+    std::string image;     // the PNG's bytes
+    double precompute_s;   // seconds spent computing maps (0 when all came from the cache)
+};
+Run05 run05(const fs::path& cache, const fs::path& output, std::vector<std::string> extra = {}) {
+    std::vector<std::string> argv = {"05_ibl_specular", "--headless", "--size", "320x180",
+                                     "--benchmark",     "--frames",   "1",      "--output",
+                                     output.string()};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    Run05 r{runSample(argv, {.setEnv = {{"PBR_CACHE_DIR", cache.string()}}}), "", -1.0};
+    EXPECT_EQ(r.run.exitCode, 0) << r.run.err;
+    r.image = readBytes(output);
+    std::smatch match;
+    if (std::regex_search(r.run.out, match, std::regex("\"precompute_s\":([0-9.]+)"))) {
+        r.precompute_s = std::stod(match[1]);
+    }
+    return r;
+}
+
+std::map<std::string, std::string> cacheFiles(const fs::path& cache) {
+    std::map<std::string, std::string> files;
+    for (const char* name : kMaps) files[name] = readBytes(cache / name);
+    return files;
+}
+
+TEST(IblCache, SecondStartLoadsWhatTheFirstStored) {
+    const fs::path dir = testOutputDir("ibl_cache_warm"), cache = dir / "cache";
+    const Run05 cold = run05(cache, dir / "cold.png");
+    ASSERT_FALSE(cold.image.empty());
+    EXPECT_GT(cold.precompute_s, 0.0);
+    const auto stored = cacheFiles(cache);
+    for (const auto& [name, bytes] : stored) EXPECT_GT(bytes.size(), 1000u) << name;
+    std::map<std::string, fs::file_time_type> written;
+    for (const char* name : kMaps) written[name] = fs::last_write_time(cache / name);
+
+    const Run05 warm = run05(cache, dir / "warm.png");
+    EXPECT_EQ(warm.precompute_s, 0.0) << "a map was computed although the cache held it";
+    EXPECT_TRUE(warm.image == cold.image) << "a start from the cache draws differently";
+    EXPECT_EQ(warm.run.err, "");
+    for (const char* name : kMaps) EXPECT_EQ(fs::last_write_time(cache / name), written[name]);
+
+    const Run05 uncached = run05(cache, dir / "uncached.png", {"--no-cache"});
+    EXPECT_GT(uncached.precompute_s, 0.0);
+    EXPECT_TRUE(uncached.image == cold.image);
+    for (const char* name : kMaps) EXPECT_EQ(fs::last_write_time(cache / name), written[name]);
+}
+
+TEST(IblCache, DamagedOrStaleFilesAreRecomputedNotDrawn) {
+    const fs::path dir = testOutputDir("ibl_cache_damaged"), cache = dir / "cache";
+    const Run05 cold = run05(cache, dir / "cold.png");
+    const auto stored = cacheFiles(cache);
+
+    // Cut short, and not a KTX file at all.
+    const std::string prefiltered = stored.at("sunny_courtyard.prefiltered.ktx");
+    std::ofstream(cache / "sunny_courtyard.prefiltered.ktx", std::ios::binary)
+        .write(prefiltered.data(), std::streamsize(prefiltered.size() / 2));
+    std::ofstream(cache / "sunny_courtyard.irradiance.ktx", std::ios::binary) << "not a KTX file";
+    const Run05 damaged = run05(cache, dir / "damaged.png");
+    EXPECT_TRUE(damaged.image == cold.image) << "a damaged cache file changed the picture";
+    const auto notes = damaged.run.errLines();
+    ASSERT_EQ(notes.size(), 2u) << damaged.run.err;
+    EXPECT_NE(damaged.run.err.find("sunny_courtyard.prefiltered.ktx"), std::string::npos);
+    EXPECT_NE(damaged.run.err.find("sunny_courtyard.irradiance.ktx"), std::string::npos);
+    for (const std::string& note : notes) {
+        EXPECT_NE(note.find("recomputing"), std::string::npos) << note;
+    }
+    EXPECT_TRUE(cacheFiles(cache) == stored) << "the damaged files were not replaced";
+
+    // Stale: another environment under the same file name leaves its maps under the same cache
+    // names; going back to the first one finds keys that do not match.
+    const fs::path other = dir / "other" / "sunny_courtyard.hdr";
+    fs::create_directories(other.parent_path());
+    HdrImage grey{64, 32, std::vector<float>(64 * 32 * 3, 0.25f)};
+    writeHdr(other, grey);
+    const Run05 elsewhere = run05(cache, dir / "other.png", {"--hdr", other.string()});
+    EXPECT_FALSE(elsewhere.image == cold.image);
+    EXPECT_EQ(elsewhere.run.errLines().size(), 3u) << elsewhere.run.err;  // the LUT still holds
+    const Run05 back = run05(cache, dir / "back.png");
+    EXPECT_TRUE(back.image == cold.image);
+    EXPECT_EQ(back.run.errLines().size(), 3u) << back.run.err;
+    EXPECT_NE(back.run.err.find("stale"), std::string::npos) << back.run.err;
+    EXPECT_TRUE(cacheFiles(cache) == stored);
+}
+
+// 06 writes the LUT the renderer reads: texel (i, j) of the file, row 0 first, holds NdotV =
+// (i + 0.5) / 256 along the row and roughness = (j + 0.5) / 256 down the rows; R, G, B within
+// 0.01, 0.01, 0.002 of the CPU integrals (16k samples). Given --hdr it writes the two cube maps.
+TEST(BrdfLutTool, WritesTheMapsAsKtxTheRightWayRound) {
+    const fs::path dir = testOutputDir("brdf_lut_files");
+    const RunResult run =
+        runSample({"06_brdf_lut", "--headless", "--size", "320x180", "--output",
+                   (dir / "06.png").string(), "--no-cache", "--hdr",
+                   (environmentDir() / "sunny_courtyard.hdr").string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.out.find("brdf_lut.ktx"), std::string::npos) << run.out;
+
+    const KtxImage lut = readKtx(dir / "brdf_lut.ktx");
+    ASSERT_EQ(lut.format, KtxFormat::RGBA16F);
+    ASSERT_EQ(lut.width, 256);
+    ASSERT_EQ(lut.height, 256);
+    EXPECT_EQ(lut.metadata.at("KTXorientation"), "S=r,T=u");
+    auto texel = [&](int i, int j, int channel) {
+        std::uint16_t half;
+        std::memcpy(&half, &lut.images[0][((size_t(j) * 256 + size_t(i)) * 4 + size_t(channel)) * 2],
+                    2);
+        return halfToFloat(half);
+    };
+    for (const auto& [i, j] : {std::pair{10, 240}, {200, 30}, {128, 128}, {30, 60}, {250, 5}}) {
+        const double NdotV = (i + 0.5) / 256.0, roughness = (j + 0.5) / 256.0;
+        const glm::dvec2 scaleBias = cpu::integrateBrdf(NdotV, roughness, 16384);
+        EXPECT_NEAR(texel(i, j, 0), scaleBias.x, 0.01) << i << ", " << j;
+        EXPECT_NEAR(texel(i, j, 1), scaleBias.y, 0.01) << i << ", " << j;
+        EXPECT_NEAR(texel(i, j, 2), cpu::integrateSheen(NdotV, roughness, 16384), 0.002)
+            << i << ", " << j;
+    }
+
+    const KtxImage irradiance = readKtx(dir / "sunny_courtyard_irradiance.ktx");
+    EXPECT_EQ(irradiance.faces, 6);
+    EXPECT_EQ(irradiance.width, 32);
+    EXPECT_EQ(irradiance.levels, 1);
+    const KtxImage prefiltered = readKtx(dir / "sunny_courtyard_prefiltered.ktx");
+    EXPECT_EQ(prefiltered.faces, 6);
+    EXPECT_EQ(prefiltered.width, 128);
+    EXPECT_EQ(prefiltered.levels, 5);
+}
+
+}  // namespace
+}  // namespace pbr::test
