@@ -20,8 +20,9 @@ std::array<glm::mat4, 6> captureViews() {
             glm::lookAt(o, {0, 0, 1}, {0, -1, 0}), glm::lookAt(o, {0, 0, -1}, {0, -1, 0})};
 }
 
-// Renders `shader` over the unit cube into every face of `target` at `level`.
-void renderFaces(Shader& shader, const TextureCube& target, int level) {
+}  // namespace
+
+void renderCubeFaces(Shader& shader, const TextureCube& target, int level) {
     const GpuMesh cube(pbr::cube());
     const GlFramebuffer framebuffer;
     const int size = std::max(1, target.size() >> level);
@@ -42,15 +43,13 @@ void renderFaces(Shader& shader, const TextureCube& target, int level) {
     glEnable(GL_DEPTH_TEST);
 }
 
-}  // namespace
-
 TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size) {
     const int levels = int(std::floor(std::log2(double(size)))) + 1;
     TextureCube cube(size, levels);
     Shader shader("ibl/cubemap.vert", "ibl/equirect_to_cube.frag");
     shader.set("equirectangularMap", 0);
     equirectangular.bind(0);
-    renderFaces(shader, cube, 0);
+    renderCubeFaces(shader, cube, 0);
     cube.bind(0);
     glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
     return cube;
@@ -64,7 +63,7 @@ TextureCube convolveIrradiance(const TextureCube& environment, int size, float s
     shader.set("sourceTexelSolidAngle",
                float(4.0 * M_PI / (6.0 * double(environment.size()) * double(environment.size()))));
     environment.bind(0);
-    renderFaces(shader, irradiance, 0);
+    renderCubeFaces(shader, irradiance, 0);
     return irradiance;
 }
 
@@ -80,7 +79,7 @@ TextureCube prefilterSpecular(const TextureCube& environment, int size, int leve
         shader.set("roughness", levels > 1 ? float(level) / float(levels - 1) : 0.0f);
         shader.set("footprintLod", float(std::log2(double(environment.size()) /
                                                    double(std::max(1, size >> level)))));
-        renderFaces(shader, prefiltered, level);
+        renderCubeFaces(shader, prefiltered, level);
     }
     return prefiltered;
 }

@@ -10,13 +10,23 @@
 
 namespace pbr {
 
+// Draws `shader` (with shaders/ibl/cubemap.vert) over the unit cube into every face of `target`
+// at mip `level`, one capture view per face; the fragment shader gets the direction as WorldPos.
+void renderCubeFaces(Shader& shader, const TextureCube& target, int level);
+
 // The environment as a cube map of `size`^2 faces, RGB16F, with a full mip chain (filtered
 // reads of it need the smaller levels).
 TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size);
 
 // Diffuse irradiance / pi of `environment` (so a constant environment L gives L), `size`^2
-// faces, one sample every `sampleDelta` radians of the hemisphere.
-TextureCube convolveIrradiance(const TextureCube& environment, int size, float sampleDelta = 0.05f);
+// faces, one sample every `sampleDelta` radians of the hemisphere (midpoints of whole steps),
+// each reading the environment at the mip level of its cell's size.
+// 0.075 (1,764 samples a texel): against a CPU sum over every texel of the project's environment,
+// 1.8 % mean and 12 % worst error (the sun-facing texels), where the text's 0.025 without mip
+// levels (15,876 samples) gives 4.0 % and 26 %; see tools/ibl_accuracy.cpp.
+inline constexpr float kIrradianceSampleDelta = 0.075f;
+TextureCube convolveIrradiance(const TextureCube& environment, int size,
+                               float sampleDelta = kIrradianceSampleDelta);
 
 // The specular environment prefiltered with the GGX lobe: `size`^2 faces, `levels` mip levels,
 // level m for roughness m / (levels - 1), `samples` GGX importance samples a texel, each reading

@@ -169,11 +169,12 @@ const TextureCube& IblEnvironment::environmentMap() {
     return *environment_;
 }
 
-TextureCube IblEnvironment::irradianceMap(int size) {
-    return cache_.cube(hdr_.stem().string() + ".irradiance.ktx",
-                       key("irradiance " + std::to_string(size),
-                           shaderCodeHash("ibl/cubemap.vert", "ibl/irradiance.frag")),
-                       [&] { return convolveIrradiance(environmentMap(), size); });
+TextureCube IblEnvironment::irradianceMap(int size, float sampleDelta) {
+    return cache_.cube(
+        hdr_.stem().string() + ".irradiance.ktx",
+        key("irradiance " + std::to_string(size) + " delta " + std::to_string(sampleDelta),
+            shaderCodeHash("ibl/cubemap.vert", "ibl/irradiance.frag")),
+        [&] { return convolveIrradiance(environmentMap(), size, sampleDelta); });
 }
 
 TextureCube IblEnvironment::prefilteredMap(int size, int levels, int samples) {

@@ -67,7 +67,7 @@ public:
     IblEnvironment(IblCache& cache, std::filesystem::path hdr);
 
     const TextureCube& environmentMap();  // 512^2, RGB16F, full mip chain
-    TextureCube irradianceMap(int size = 32);
+    TextureCube irradianceMap(int size = 32, float sampleDelta = kIrradianceSampleDelta);
     TextureCube prefilteredMap(int size = 128, int levels = 5, int samples = 1024);
 
 private:

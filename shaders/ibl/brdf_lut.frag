@@ -29,15 +29,15 @@ vec2 integrateBRDF(float NdotV, float roughness)
     for (uint i = 0u; i < count; ++i)
     {
         vec3 H = importanceSampleGGX(hammersley(i, count), roughness);
-        vec3 L = normalize(2.0 * dot(V, H) * H - V);
-        float NdotL = max(L.z, 0.0);
-        float NdotH = max(H.z, 0.0);
         float VdotH = max(dot(V, H), 0.0);
+        float NdotL = 2.0 * VdotH * H.z - V.z;  // L = 2 (V.H) H - V, a unit vector: only its z
+        float NdotH = max(H.z, 0.0);
         if (NdotL > 0.0)
         {
             float G = geometrySmithIbl(NdotV, NdotL, roughness);
             float G_Vis = (G * VdotH) / (NdotH * NdotV);
-            float Fc = pow(1.0 - VdotH, 5.0);
+            float c = 1.0 - VdotH;
+            float Fc = c * c * c * c * c;  // (1 - VdotH)^5
             A += (1.0 - Fc) * G_Vis;
             B += Fc * G_Vis;
         }

@@ -35,8 +35,8 @@ void main()
     uint count = uint(sampleCount);
     for (uint i = 0u; i < count; ++i)
     {
-        vec3 H = normalize(toWorld * importanceSampleGGX(hammersley(i, count), roughness));
-        vec3 L = normalize(2.0 * dot(V, H) * H - V);
+        vec3 H = toWorld * importanceSampleGGX(hammersley(i, count), roughness);  // unit
+        vec3 L = 2.0 * dot(V, H) * H - V;  // the reflection of V about H: unit too
         float NdotL = dot(N, L);
         if (NdotL > 0.0)
         {

@@ -25,8 +25,8 @@ const char* const kMaps[] = {"sunny_courtyard.environment.ktx", "sunny_courtyard
 // Runs 05 (320x180, one frame, --benchmark for its precompute figure) with `cache` as the cache.
 struct Run05 {
     RunResult run;
-    std::string image;     // the PNG's bytes
-    double precompute_s;   // seconds spent computing maps (0 when all came from the cache)
+    std::string image;    // the PNG's bytes
+    double precompute_s;  // seconds spent computing maps (0 when all came from the cache)
 };
 Run05 run05(const fs::path& cache, const fs::path& output, std::vector<std::string> extra = {}) {
     std::vector<std::string> argv = {"05_ibl_specular", "--headless", "--size", "320x180",
@@ -113,10 +113,9 @@ TEST(IblCache, DamagedOrStaleFilesAreRecomputedNotDrawn) {
 // 0.01, 0.01, 0.002 of the CPU integrals (16k samples). Given --hdr it writes the two cube maps.
 TEST(BrdfLutTool, WritesTheMapsAsKtxTheRightWayRound) {
     const fs::path dir = testOutputDir("brdf_lut_files");
-    const RunResult run =
-        runSample({"06_brdf_lut", "--headless", "--size", "320x180", "--output",
-                   (dir / "06.png").string(), "--no-cache", "--hdr",
-                   (environmentDir() / "sunny_courtyard.hdr").string()});
+    const RunResult run = runSample({"06_brdf_lut", "--headless", "--size", "320x180", "--output",
+                                     (dir / "06.png").string(), "--no-cache", "--hdr",
+                                     (environmentDir() / "sunny_courtyard.hdr").string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     EXPECT_NE(run.out.find("brdf_lut.ktx"), std::string::npos) << run.out;
 
@@ -127,8 +126,8 @@ TEST(BrdfLutTool, WritesTheMapsAsKtxTheRightWayRound) {
     EXPECT_EQ(lut.metadata.at("KTXorientation"), "S=r,T=u");
     auto texel = [&](int i, int j, int channel) {
         std::uint16_t half;
-        std::memcpy(&half, &lut.images[0][((size_t(j) * 256 + size_t(i)) * 4 + size_t(channel)) * 2],
-                    2);
+        std::memcpy(&half,
+                    &lut.images[0][((size_t(j) * 256 + size_t(i)) * 4 + size_t(channel)) * 2], 2);
         return halfToFloat(half);
     };
     for (const auto& [i, j] : {std::pair{10, 240}, {200, 30}, {128, 128}, {30, 60}, {250, 5}}) {

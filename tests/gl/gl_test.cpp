@@ -191,9 +191,10 @@ TEST(Gl, BrdfLutMatchesACpuIntegration) {
                 << "sheen at NdotV " << NdotV << ", roughness " << roughness;
         }
     }
-    std::printf("BRDF LUT: worst difference from the 16k-sample CPU integral %.5f (R, G), "
-                "%.5f (B, largest value %.4f)\n",
-                worst, worstSheen, largestSheen);
+    std::printf(
+        "BRDF LUT: worst difference from the 16k-sample CPU integral %.5f (R, G), "
+        "%.5f (B, largest value %.4f)\n",
+        worst, worstSheen, largestSheen);
     EXPECT_GT(largestSheen, 0.02);  // the comparison above is not between two zeros
     // smooth and head-on: almost all of F0 comes back (scale near 1, bias near 0)
     const size_t corner = (size_t(0) * kSize + size_t(kSize - 1)) * 4;
@@ -206,13 +207,14 @@ TEST(Gl, BrdfLutMatchesACpuIntegration) {
 // The prefiltered map's level 0 is the mirror (roughness 0): the environment itself, averaged
 // over each texel's footprint. Its 128^2 texel centres coincide with those of the 512^2
 // environment's mip level 2 (each the box average of 4 x 4 source texels), so the two must agree
-// to half-float precision: 0.1 % relative (a half has an 11-bit significand: 0.05 %), over the
-// project's environment, sun (thousands of times the sky) included.
+// to half-float precision: 0.2 % relative, two steps of a half's 11-bit significand (measured: one
+// step, 0.1 %), over the project's environment, sun (thousands of times the sky) included. A read
+// one mip level off would miss by whole percents at every edge of the checkerboard.
 TEST(Gl, PrefilteredLevelZeroIsTheSource) {
     const fs::path dir = test::testOutputDir("gl_prefilter");
     App app = makeApp(dir);
-    const TextureCube environment = equirectangularToCubemap(
-        Texture2D(readHdr(environmentDir() / "sunny_courtyard.hdr")), 512);
+    const TextureCube environment =
+        equirectangularToCubemap(Texture2D(readHdr(environmentDir() / "sunny_courtyard.hdr")), 512);
     const TextureCube prefiltered = prefilterSpecular(environment, 128, 5, 64);
     float brightest = 0.0f, worst = 0.0f;
     for (int face = 0; face < 6; ++face) {
@@ -222,7 +224,7 @@ TEST(Gl, PrefilteredLevelZeroIsTheSource) {
         for (size_t i = 0; i < mirror.size(); ++i) {
             brightest = std::max(brightest, source[i]);
             worst = std::max(worst, std::abs(mirror[i] - source[i]) / std::max(source[i], 1e-3f));
-            ASSERT_NEAR(mirror[i], source[i], 1e-3f * std::max(source[i], 1e-3f))
+            ASSERT_NEAR(mirror[i], source[i], 2e-3f * std::max(source[i], 1e-3f))
                 << "face " << face << ", texel " << i / 3 << ", channel " << i % 3;
         }
     }
@@ -375,14 +377,13 @@ TEST(Gl, WhiteFurnace) {
         for (int col = 0; col < kColumns; ++col) {
             const Stats& s = stats[size_t(metallic * kColumns + col)];
             ASSERT_GT(s.count, 500) << "sphere " << metallic << ", " << col << " barely visible";
-            EXPECT_EQ(s.outside, 0) << s.outside << " of " << s.count
-                                    << " pixels of the sphere metallic " << metallic
-                                    << ", roughness " << roughnessOf(col)
-                                    << " outside the derived band";
-            std::printf("furnace metallic %d roughness %.1f: %.3f..%.3f (mean %.3f; CPU lowest "
-                        "%.3f)\n",
-                        metallic, roughnessOf(col), s.lowest, s.highest, s.sum / s.count,
-                        s.lowestExpected);
+            EXPECT_EQ(s.outside, 0)
+                << s.outside << " of " << s.count << " pixels of the sphere metallic " << metallic
+                << ", roughness " << roughnessOf(col) << " outside the derived band";
+            std::printf(
+                "furnace metallic %d roughness %.1f: %.3f..%.3f (mean %.3f; CPU lowest "
+                "%.3f)\n",
+                metallic, roughnessOf(col), s.lowest, s.highest, s.sum / s.count, s.lowestExpected);
         }
     }
     // A white mirror in a white furnace vanishes: exactly 1 all over.

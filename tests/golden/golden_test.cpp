@@ -72,11 +72,10 @@ TEST_P(GoldenOnBackend, LightingTextured02MatchesGolden) {
 // The other four material sets, each on the tutorial's close-up view, at a small size.
 TEST_P(GoldenOnBackend, MaterialSetsMatchGoldens) {
     for (const char* set : {"gold", "grass", "plastic", "wall"}) {
-        const SampleRender rendered =
-            render("02_lighting_textured",
-                   {"--material-dir", (materialDir() / set).string(), "--size", "480x270",
-                    "--camera", "0,0,3"},
-                   "_sets");
+        const SampleRender rendered = render("02_lighting_textured",
+                                             {"--material-dir", (materialDir() / set).string(),
+                                              "--size", "480x270", "--camera", "0,0,3"},
+                                             "_sets");
         expectCleanRun(rendered);
         expectNotBlank(readImage(rendered.image, 3), 0.3);
         const fs::path kept = rendered.image.parent_path() / (std::string("02_") + set + ".png");
@@ -228,9 +227,8 @@ TEST(Golden, TangentFramesAgree) {
 TEST(Golden, HeadlessOutputIsBitIdentical) {
     const fs::path dir = testOutputDir("golden_determinism");
     const std::vector<std::string> args = {"--size", "640x360"};
-    for (const std::string sample :
-         {"01_lighting", "02_lighting_textured", "03_gltf_unlit", "04_ibl_irradiance",
-          "05_ibl_specular", "06_brdf_lut"}) {
+    for (const std::string sample : {"01_lighting", "02_lighting_textured", "03_gltf_unlit",
+                                     "04_ibl_irradiance", "05_ibl_specular", "06_brdf_lut"}) {
         const SampleRender first = renderSample(sample, dir / (sample + ".first.png"), args);
         const SampleRender second = renderSample(sample, dir / (sample + ".second.png"), args);
         expectCleanRun(first);
