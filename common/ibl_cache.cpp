@@ -16,6 +16,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kKeyName = "pbr.cacheKey";
+// The C++ side of the maps (the HDR decoder, the face order, the sizes of the mip chain): the
+// shaders are hashed into every key, this is counted by hand. Raise it when that code changes.
+constexpr const char* kCodeVersion = "pbr ibl cache 2";
 
 // The shader code a map is made with, so that editing a shader makes its cached maps stale.
 std::string shaderCodeHash(const std::string& vertex, const std::string& fragment) {
@@ -149,11 +152,11 @@ Texture2D IblCache::texture(const std::string& file, const std::string& key, Ktx
 
 IblEnvironment::IblEnvironment(IblCache& cache, fs::path hdr)
     : cache_(cache), hdr_(std::move(hdr)) {
-    environmentKey_ = "environment " + std::to_string(kEnvironmentSize) + " full mips; source " +
-                      hdr_.filename().string() + " " + contentHash(readTextFile(hdr_)) +
-                      "; shaders " +
-                      shaderCodeHash("ibl/cubemap.vert", "ibl/equirect_to_cube.frag") +
-                      "; renderer " + renderer();
+    environmentKey_ =
+        std::string(kCodeVersion) + "; environment " + std::to_string(kEnvironmentSize) +
+        " full mips; source " + hdr_.filename().string() + " " + contentHash(readTextFile(hdr_)) +
+        "; shaders " + shaderCodeHash("ibl/cubemap.vert", "ibl/equirect_to_cube.frag") +
+        "; renderer " + renderer();
 }
 
 std::string IblEnvironment::key(const std::string& what, const std::string& shaders) const {
@@ -189,7 +192,8 @@ Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channe
     const bool sheen = channels == BrdfLutChannels::ScaleBiasSheen;
     const std::string name =
         std::string(sheen ? "brdf_lut_sheen_" : "brdf_lut_") + std::to_string(size);
-    const std::string key = name + " samples " + std::to_string(samples) + "; shaders " +
+    const std::string key = std::string(kCodeVersion) + "; " + name + " samples " +
+                            std::to_string(samples) + "; shaders " +
                             shaderCodeHash("ibl/fullscreen.vert", "ibl/brdf_lut.frag") +
                             "; renderer " + renderer();
     return cache.texture(name + ".ktx", key, sheen ? KtxFormat::RGBA16F : KtxFormat::RG16F,

@@ -5,10 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <optional>
+#include <string_view>
 
 #include "error.h"
 #include "paths.h"
@@ -70,22 +73,121 @@ void writePng(const fs::path& path, const Image& image) {
     if (!ok) throw Error(displayPath(path) + ": cannot write PNG (is the folder writable?)");
 }
 
+namespace {
+// The Radiance RGBE pixel as a float triple, exactly as stb_image converts it (mantissa times
+// 2^(exponent - 136); exponent 0 is black), so that our decoder and stb's agree to the bit.
+void rgbeToFloat(const std::uint8_t* rgbe, float* rgb) {
+    if (rgbe[3] == 0) {
+        rgb[0] = rgb[1] = rgb[2] = 0.0f;
+        return;
+    }
+    const auto scale = float(std::ldexp(1.0f, int(rgbe[3]) - (128 + 8)));
+    for (int c = 0; c < 3; ++c) rgb[c] = float(rgbe[c]) * scale;
+}
+}  // namespace
+
+// A decoder of our own rather than stb_image's: Debian's stb loops forever on a truncated
+// run-length scanline (a zero count makes no progress), and a sample must refuse such a file.
+HdrImage decodeHdr(std::string_view bytes, const std::string& name) {
+    size_t at = 0;
+    auto fail = [&](const std::string& reason) { return Error(name + ": " + reason); };
+    auto line = [&]() -> std::optional<std::string_view> {
+        const size_t end = bytes.find('\n', at);
+        if (end == std::string_view::npos) return std::nullopt;
+        const std::string_view text = bytes.substr(at, end - at);
+        at = end + 1;
+        return text;
+    };
+    const auto magic = line();
+    if (!magic || (*magic != "#?RADIANCE" && *magic != "#?RGBE")) {
+        throw fail("not a Radiance .hdr file (no #?RADIANCE line)");
+    }
+    bool rgbe = false;
+    for (;;) {
+        const auto header = line();
+        if (!header) throw fail("truncated in the header");
+        if (header->empty()) break;
+        if (*header == "FORMAT=32-bit_rle_rgbe") rgbe = true;
+        if (header->starts_with("FORMAT=") && !rgbe) {
+            throw fail("unsupported pixel format (" + std::string(*header) +
+                       "; only 32-bit_rle_rgbe)");
+        }
+    }
+    if (!rgbe) throw fail("no FORMAT=32-bit_rle_rgbe line in the header");
+    const auto resolution = line();
+    int width = 0, height = 0;
+    char extra = 0;
+    if (!resolution || std::sscanf(std::string(*resolution).c_str(), "-Y %d +X %d%c", &height,
+                                   &width, &extra) != 2) {
+        throw fail("unsupported resolution line (only \"-Y <height> +X <width>\", rows top first)");
+    }
+    constexpr int kMaxSide = 32768;
+    if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide) {
+        throw fail("image size " + std::to_string(width) + " x " + std::to_string(height) +
+                   " out of range (1 to " + std::to_string(kMaxSide) + " a side)");
+    }
+    // The fewest bytes the pixels can take (runs of 127 at best): refuse a short file before
+    // allocating for the size its header claims.
+    const bool runLength = width >= 8 && width < 32768;
+    const size_t leastBytes =
+        size_t(height) * std::min(size_t(width) * 4, 4 + 8 * ((size_t(width) + 126) / 127));
+    if (bytes.size() - at < (runLength ? leastBytes : size_t(width) * size_t(height) * 4)) {
+        throw fail("truncated (" + std::to_string(width) + " x " + std::to_string(height) +
+                   " pixels need more data than the file holds)");
+    }
+
+    HdrImage image{width, height, std::vector<float>(size_t(width) * size_t(height) * 3)};
+    auto next = [&]() -> std::uint8_t {
+        if (at >= bytes.size()) throw fail("truncated in the pixel data");
+        return std::uint8_t(bytes[at++]);
+    };
+    auto flat = [&](size_t firstPixel) {
+        for (size_t i = firstPixel; i < size_t(width) * size_t(height); ++i) {
+            std::uint8_t pixel[4];
+            for (std::uint8_t& byte : pixel) byte = next();
+            rgbeToFloat(pixel, &image.pixels[i * 3]);
+        }
+    };
+    // Uncompressed files start straight with pixels; run-length rows start with 2, 2, width.
+    if (!runLength || bytes[at] != 2 || bytes[at + 1] != 2 || (bytes[at + 2] & 0x80)) {
+        flat(0);
+        return image;
+    }
+    std::vector<std::uint8_t> scanline(size_t(width) * 4);
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t a = next(), b = next(), hi = next(), lo = next();
+        if (a != 2 || b != 2 || ((hi << 8) | lo) != width) {
+            throw fail("bad scanline header in row " + std::to_string(y));
+        }
+        for (int channel = 0; channel < 4; ++channel) {
+            for (int x = 0; x < width;) {
+                int count = next();
+                const bool run = count > 128;
+                if (run) count -= 128;
+                if (count == 0 || count > width - x) {
+                    throw fail("bad run-length data in row " + std::to_string(y));
+                }
+                const std::uint8_t value = run ? next() : 0;
+                for (int k = 0; k < count; ++k, ++x) {
+                    scanline[size_t(x) * 4 + size_t(channel)] = run ? value : next();
+                }
+            }
+        }
+        for (int x = 0; x < width; ++x) {
+            rgbeToFloat(&scanline[size_t(x) * 4],
+                        &image.pixels[(size_t(y) * size_t(width) + size_t(x)) * 3]);
+        }
+    }
+    return image;
+}
+
 HdrImage readHdr(const fs::path& path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) throw Error(displayPath(path) + ": no such file");
-    if (fs::file_size(path, ec) == 0) throw Error(displayPath(path) + ": empty file");
-    if (!stbi_is_hdr(path.c_str())) throw Error(displayPath(path) + ": not a Radiance .hdr file");
-    int width = 0, height = 0, channels = 0;
-    std::unique_ptr<float, void (*)(void*)> data(
-        stbi_loadf(path.c_str(), &width, &height, &channels, 3), stbi_image_free);
-    if (!data) {
-        const char* reason = stbi_failure_reason();
-        throw Error(displayPath(path) + ": cannot decode HDR image (" +
-                    (reason ? reason : "unknown reason") + ")");
-    }
-    HdrImage image{width, height, {}};
-    image.pixels.assign(data.get(), data.get() + size_t(width) * size_t(height) * 3);
-    return image;
+    if (fs::is_directory(path, ec)) throw Error(displayPath(path) + ": is a directory, not a file");
+    const std::string bytes = readTextFile(path);
+    if (bytes.empty()) throw Error(displayPath(path) + ": empty file");
+    return decodeHdr(bytes, displayPath(path));
 }
 
 void writeHdr(const fs::path& path, const HdrImage& image) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -43,8 +44,12 @@ struct HdrImage {
         return {pixels[i], pixels[i + 1], pixels[i + 2]};
     }
 };
-// Reads a Radiance .hdr; throws Error("<path>: <reason>").
+// Reads a Radiance .hdr; throws Error("<path>: <reason>") for anything but a complete file
+// (missing, empty, not Radiance, an unsupported layout, a size out of range, bad run-length data,
+// truncated).
 HdrImage readHdr(const std::filesystem::path& path);
+// The same from the file's bytes; `name` is what the error messages call it.
+HdrImage decodeHdr(std::string_view bytes, const std::string& name);
 // Writes a Radiance .hdr (RGBE, run-length encoded); same bytes for the same pixels.
 void writeHdr(const std::filesystem::path& path, const HdrImage& image);
 

@@ -4,6 +4,8 @@
 // the LUT. See README.md beside this file.
 #include <cstdio>
 #include <filesystem>
+#include <utility>
+#include <vector>
 
 #include "app.h"
 #include "error.h"
@@ -13,12 +15,9 @@
 #include "paths.h"
 
 namespace {
-// Writes `image` to <dir>/<name> with a line saying what it holds; reports the path.
-void writeMap(const std::filesystem::path& dir, const std::string& name, pbr::KtxImage image,
-              const std::string& contents) {
+// Writes `image` to `path` with its orientation stated, and says so.
+void writeMap(const std::filesystem::path& path, pbr::KtxImage image) {
     image.metadata["KTXorientation"] = "S=r,T=u";  // row 0 at t = 0, as glTexImage2D takes it
-    image.metadata["pbr.contents"] = contents;
-    const std::filesystem::path path = dir / name;
     pbr::writeKtx(path, image);
     std::printf("06_brdf_lut: wrote %s\n", pbr::displayPath(path).c_str());
 }
@@ -38,21 +37,28 @@ int main(int argc, char** argv) try {
         app.flag("--ktx-dir")
             .value_or(output.has_parent_path() ? output.parent_path().string() : ".");
 
+    // Everything is computed (or loaded) before any file is written: a broken --hdr leaves none.
     pbr::IblCache cache(pbr::cacheDir(app.options()));
-    const pbr::Texture2D brdfLUT =
-        pbr::brdfLut(cache, 256, 1024, pbr::BrdfLutChannels::ScaleBiasSheen);
-    writeMap(ktxDir, "brdf_lut.ktx", brdfLUT.toKtx(pbr::KtxFormat::RGBA16F),
-             "BRDF LUT, 1024 samples; x = NdotV, y = roughness at texel centres; R = GGX scale, "
-             "G = GGX bias to F0, B = Charlie sheen");
+    std::vector<std::pair<std::string, pbr::KtxImage>> files;
     if (const auto hdr = app.flag("--hdr")) {
         pbr::IblEnvironment environment(cache, *hdr);
         const std::string stem = std::filesystem::path(*hdr).stem().string();
-        writeMap(ktxDir, stem + "_irradiance.ktx", environment.irradianceMap(32).toKtx(),
-                 "diffuse irradiance / pi, 32^2 cube map");
-        writeMap(
-            ktxDir, stem + "_prefiltered.ktx", environment.prefilteredMap(128, 5, 1024).toKtx(),
-            "GGX-prefiltered specular cube map, 128^2, mip m for roughness m / 4, 1024 samples");
+        pbr::KtxImage irradiance = environment.irradianceMap(32).toKtx();
+        irradiance.metadata["pbr.contents"] = "diffuse irradiance / pi, 32^2 cube map";
+        pbr::KtxImage prefiltered = environment.prefilteredMap(128, 5, 1024).toKtx();
+        prefiltered.metadata["pbr.contents"] =
+            "GGX-prefiltered specular cube map, 128^2, mip m for roughness m / 4, 1024 samples";
+        files.emplace_back(stem + "_irradiance.ktx", std::move(irradiance));
+        files.emplace_back(stem + "_prefiltered.ktx", std::move(prefiltered));
     }
+    const pbr::Texture2D brdfLUT =
+        pbr::brdfLut(cache, 256, 1024, pbr::BrdfLutChannels::ScaleBiasSheen);
+    pbr::KtxImage lut = brdfLUT.toKtx(pbr::KtxFormat::RGBA16F);
+    lut.metadata["pbr.contents"] =
+        "BRDF LUT, 1024 samples; x = NdotV, y = roughness at texel centres; R = GGX scale, "
+        "G = GGX bias to F0, B = Charlie sheen";
+    files.emplace(files.begin(), "brdf_lut.ktx", std::move(lut));
+    for (auto& [name, image] : files) writeMap(ktxDir / name, std::move(image));
     app.addPrecomputeSeconds(cache.computeSeconds());
 
     pbr::Shader& shader = app.shader("ibl/fullscreen.vert", "06_brdf_lut/show_lut.frag");

@@ -116,3 +116,60 @@ TEST(Image, BadFilesNameThePathAndTheReason) {
 
 }  // namespace
 }  // namespace pbr
+
+namespace pbr {
+namespace {
+
+// Damaged Radiance files: each refused with the file's name and the reason, none hangs or reads
+// past the end (Debian's stb_image loops forever on a zero run count, which a truncated file
+// produces).
+TEST(Hdr, DamagedFilesAreRefusedWithAReason) {
+    // a valid 8 x 2 run-length image: two scanlines of four channels, each 8 literal bytes
+    std::string valid = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 8\n";
+    for (int row = 0; row < 2; ++row) {
+        valid += std::string{2, 2, 0, 8};
+        for (const char value : {char(128), char(64), char(32), char(129)}) {
+            valid += char(8) + std::string(8, value);
+        }
+    }
+    const size_t data = valid.find("+X 8\n") + 5;  // the first scanline's header
+    const HdrImage image = decodeHdr(valid, "valid.hdr");
+    ASSERT_EQ(image.width, 8);
+    ASSERT_EQ(image.height, 2);
+    EXPECT_FLOAT_EQ(image.pixels[0], 128.0f * 2.0f / 256.0f);  // 128 x 2^(129 - 136)
+    EXPECT_FLOAT_EQ(image.pixels[1], 64.0f * 2.0f / 256.0f);
+
+    auto refusal = [](const std::string& bytes) {
+        try {
+            decodeHdr(bytes, "broken.hdr");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    const std::pair<std::string, std::string> cases[] = {
+        {"GIF89a", "not a Radiance .hdr file"},
+        {"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n", "truncated in the header"},
+        {"#?RADIANCE\nFORMAT=32-bit_rle_xyze\n\n-Y 2 +X 8\n", "unsupported pixel format"},
+        {"#?RADIANCE\n\n-Y 2 +X 8\n", "no FORMAT=32-bit_rle_rgbe"},
+        {"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n+Y 2 +X 8\n", "unsupported resolution line"},
+        {"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 0\n", "out of range"},
+        {"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 100000\n", "out of range"},
+        {"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 9000 +X 9000\n" + std::string(64, '\2'),
+         "truncated (9000 x 9000 pixels"},
+        {valid.substr(0, valid.size() - 5), "truncated in the pixel data"},
+        {valid.substr(0, data + 4) + '\0' + valid.substr(data + 5), "bad run-length data"},
+        {valid.substr(0, data + 4) + char(128 + 9) + valid.substr(data + 5), "bad run-length data"},
+        {valid.substr(0, data) + std::string{2, 2, 0, 9} + valid.substr(data + 4),
+         "bad scanline header"},
+    };
+    for (const auto& [bytes, reason] : cases) {
+        const std::string message = refusal(bytes);
+        EXPECT_EQ(message.rfind("broken.hdr: ", 0), 0u) << message;
+        EXPECT_NE(message.find(reason), std::string::npos)
+            << "wanted \"" << reason << "\", got " << message;
+    }
+}
+
+}  // namespace
+}  // namespace pbr
