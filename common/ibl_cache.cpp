@@ -105,7 +105,6 @@ void IblCache::store(const fs::path& path, KtxImage image, const std::string& ke
 
 template <typename T>
 T IblCache::timed(const std::function<T()>& compute) {
-    ++misses_;
     const auto start = std::chrono::steady_clock::now();
     T result = compute();
     glFinish();
@@ -121,7 +120,6 @@ TextureCube IblCache::cube(const std::string& file, const std::string& key,
     if (std::optional<KtxImage> image = load(path, key)) {
         try {
             TextureCube cube = TextureCube::fromKtx(*image);
-            ++hits_;
             return cube;
         } catch (const Error& error) {
             std::fprintf(stderr, "note: %s: %s; recomputing\n", displayPath(path).c_str(),
@@ -139,7 +137,6 @@ Texture2D IblCache::texture(const std::string& file, const std::string& key, Ktx
     const fs::path path = *dir_ / file;
     if (std::optional<KtxImage> image = load(path, key)) {
         if (image->format == format && image->faces == 1) {
-            ++hits_;
             return Texture2D::fromKtx(*image);
         }
         std::fprintf(stderr, "note: %s: not the expected format; recomputing\n",

@@ -39,11 +39,8 @@ public:
     Texture2D texture(const std::string& file, const std::string& key, KtxFormat format,
                       const std::function<Texture2D()>& compute);
 
-    bool enabled() const { return dir_.has_value(); }
     // Seconds spent computing maps (not loading them), GPU work finished.
     double computeSeconds() const { return computeSeconds_; }
-    int hits() const { return hits_; }
-    int misses() const { return misses_; }
 
 private:
     std::optional<KtxImage> load(const std::filesystem::path& path, const std::string& key);
@@ -53,7 +50,6 @@ private:
 
     std::optional<std::filesystem::path> dir_;
     double computeSeconds_ = 0.0;
-    int hits_ = 0, misses_ = 0;
 };
 
 // A 64-bit FNV-1a hash as 16 hex digits: the content part of a cache key.
