@@ -20,6 +20,15 @@ std::array<glm::mat4, 6> captureViews() {
             glm::lookAt(o, {0, 0, 1}, {0, -1, 0}), glm::lookAt(o, {0, 0, -1}, {0, -1, 0})};
 }
 
+// Gives a convolution shader its source: environmentMap on unit 0, and the solid angle of one
+// texel of its level 0 (4 pi / (6 size^2)), from which the shader picks the mip level to read.
+void readFrom(Shader& shader, const TextureCube& environment) {
+    shader.set("environmentMap", 0);
+    shader.set("sourceTexelSolidAngle",
+               float(4.0 * M_PI / (6.0 * double(environment.size()) * double(environment.size()))));
+    environment.bind(0);
+}
+
 }  // namespace
 
 void renderCubeFaces(Shader& shader, const TextureCube& target, int level) {
@@ -58,11 +67,8 @@ TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size)
 TextureCube convolveIrradiance(const TextureCube& environment, int size, float sampleDelta) {
     TextureCube irradiance(size, 1);
     Shader shader("ibl/cubemap.vert", "ibl/irradiance.frag");
-    shader.set("environmentMap", 0);
+    readFrom(shader, environment);
     shader.set("sampleDelta", sampleDelta);
-    shader.set("sourceTexelSolidAngle",
-               float(4.0 * M_PI / (6.0 * double(environment.size()) * double(environment.size()))));
-    environment.bind(0);
     renderCubeFaces(shader, irradiance, 0);
     return irradiance;
 }
@@ -70,11 +76,8 @@ TextureCube convolveIrradiance(const TextureCube& environment, int size, float s
 TextureCube prefilterSpecular(const TextureCube& environment, int size, int levels, int samples) {
     TextureCube prefiltered(size, levels);
     Shader shader("ibl/cubemap.vert", "ibl/prefilter.frag");
-    shader.set("environmentMap", 0);
+    readFrom(shader, environment);
     shader.set("sampleCount", samples);
-    shader.set("sourceTexelSolidAngle",
-               float(4.0 * M_PI / (6.0 * double(environment.size()) * double(environment.size()))));
-    environment.bind(0);
     for (int level = 0; level < levels; ++level) {
         shader.set("roughness", levels > 1 ? float(level) / float(levels - 1) : 0.0f);
         shader.set("footprintLod", float(std::log2(double(environment.size()) /

@@ -49,6 +49,14 @@ protected:
         args.insert(args.end(), {"--backend", GetParam()});
         return renderSample(sample, dir / (sample + ".png"), args);
     }
+    // For a second golden of one sample: the render renamed to <name>.png, then compared with
+    // tests/golden/<name>.png.
+    static ::testing::AssertionResult matchesGoldenAs(const std::string& name,
+                                                      const SampleRender& rendered) {
+        const fs::path kept = rendered.image.parent_path() / (name + ".png");
+        fs::rename(rendered.image, kept);
+        return matchesGolden(name, {rendered.run, kept, rendered.backend, rendered.renderer});
+    }
 };
 
 TEST_P(GoldenOnBackend, Lighting01MatchesGolden) {
@@ -78,10 +86,7 @@ TEST_P(GoldenOnBackend, MaterialSetsMatchGoldens) {
                                              "_sets");
         expectCleanRun(rendered);
         expectNotBlank(readImage(rendered.image, 3), 0.3);
-        const fs::path kept = rendered.image.parent_path() / (std::string("02_") + set + ".png");
-        fs::rename(rendered.image, kept);
-        EXPECT_TRUE(matchesGolden(std::string("02_") + set,
-                                  {rendered.run, kept, rendered.backend, rendered.renderer}));
+        EXPECT_TRUE(matchesGoldenAs(std::string("02_") + set, rendered));
     }
 }
 
@@ -132,10 +137,7 @@ TEST_P(GoldenOnBackend, IblSpecular05MatchesGolden) {
 TEST_P(GoldenOnBackend, IblSpecular05TexturedMatchesGolden) {
     const SampleRender rendered = render("05_ibl_specular", {"--textured"}, "_textured");
     expectCleanRun(rendered);
-    const fs::path kept = rendered.image.parent_path() / "05_ibl_specular_textured.png";
-    fs::rename(rendered.image, kept);
-    EXPECT_TRUE(matchesGolden("05_ibl_specular_textured",
-                              {rendered.run, kept, rendered.backend, rendered.renderer}));
+    EXPECT_TRUE(matchesGoldenAs("05_ibl_specular_textured", rendered));
 }
 
 TEST_P(GoldenOnBackend, BrdfLut06MatchesGolden) {
