@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "image.h"
+#include "output.h"
 #include "paths.h"
 
 namespace pbr {
@@ -50,6 +51,15 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (options_.help) {
         std::fputs(usage_.c_str(), stdout);
         throw ExitRequest{0};
+    }
+    // Where files will go, checked before any window opens or anything is computed: a picture
+    // that cannot be written should not cost a render first.
+    if (!options_.output.empty()) requireWritableFilePath(options_.output, options_.output);
+    for (const FlagSpec& spec : config_.flags) {
+        const auto value = flag(spec.name);
+        if (spec.kind == FlagSpec::Kind::OutputFolder && value) {
+            requireOutputFolder(*value, spec.name + " " + *value);
+        }
     }
 
     if (!options_.headless) {
@@ -116,34 +126,34 @@ std::optional<std::string> App::flag(const std::string& name) const {
     return found->second;
 }
 
-std::string App::flagChoice(const std::string& name,
-                            const std::vector<std::string>& choices) const {
-    const auto value = flag(name);
-    if (!value) return choices.front();
-    for (const std::string& choice : choices) {
-        if (*value == choice) return choice;
+const FlagSpec& App::sampleFlag(const std::string& name) const {
+    for (const FlagSpec& spec : config_.flags) {
+        if (spec.name == name) return spec;
     }
-    std::string list;
-    for (const std::string& choice : choices) list += (list.empty() ? "" : " or ") + choice;
-    throw UsageError(name + ": '" + *value + "' is not " + list, usage_);
+    throw Error("the sample asks for a flag it does not declare: " + name);
 }
 
-int App::flagInt(const std::string& name, int min, int max, int fallback) const {
-    const auto value = flag(name);
-    try {
-        return value ? parseIntFlag(name, *value, min, max) : fallback;
-    } catch (const UsageError& e) {
-        throw UsageError(e.what(), usage_);
-    }
+std::string App::flagChoice(const std::string& name) const {
+    const FlagSpec& spec = sampleFlag(name);
+    if (spec.kind != FlagSpec::Kind::Choice || spec.choices.empty())
+        throw Error(name + " is not a choice flag");
+    return flag(name).value_or(spec.choices.front());
 }
 
-float App::flagFloat(const std::string& name, float fallback) const {
+int App::flagInt(const std::string& name, int fallback) const {
+    const FlagSpec& spec = sampleFlag(name);
     const auto value = flag(name);
-    try {
-        return value ? parseFloatFlag(name, *value) : fallback;
-    } catch (const UsageError& e) {
-        throw UsageError(e.what(), usage_);
-    }
+    return value ? parseIntFlag(name, *value, int(spec.min), int(spec.max)) : fallback;
+}
+
+float App::flagNumber(const std::string& name, float fallback) const {
+    const FlagSpec& spec = sampleFlag(name);
+    const auto value = flag(name);
+    return value ? float(parseNumberFlag(name, *value, spec.min, spec.max)) : fallback;
+}
+
+void App::addOutputFile(fs::path path, std::string bytes) {
+    outputFiles_.emplace_back(std::move(path), std::move(bytes));
 }
 
 Shader& App::shader(const std::string& vertex, const std::string& fragment) {
@@ -221,8 +231,7 @@ void App::endFrame() {
             frameMilliseconds_.push_back((context_->seconds() - frameStart_) * 1000.0);
     }
     if (screenshotCount_ > 0 && context_->windowed()) {
-        writeFrame("screenshot-" + config_.name + "-" + std::to_string(frameIndex_) + ".png",
-                   "screenshot");
+        writeScreenshot("screenshot-" + config_.name + "-" + std::to_string(frameIndex_) + ".png");
         screenshotCount_ = 0;
     }
     if (context_->windowed()) {
@@ -233,26 +242,62 @@ void App::endFrame() {
     checkGlErrors("frame");
 }
 
-void App::writeFrame(const std::string& path, const char* verb) {
-    writePng(path, target_->readPixels());
+std::string App::frameDescription() const {
+    char text[64];
+    std::snprintf(text, sizeof text, "%dx%d, msaa %d", target_->width(), target_->height(),
+                  target_->samples());
+    return std::string(text) + ", " + context_->backend() + ", " + renderer();
+}
+
+namespace {
+std::string absoluteForMessage(const fs::path& path) {
     std::error_code ec;
     const fs::path absolute = fs::absolute(path, ec);
-    std::printf("%s: %s %s (%dx%d, msaa %d, %s, %s)\n", config_.name.c_str(), verb,
-                (ec ? fs::path(path) : absolute).c_str(), target_->width(), target_->height(),
-                target_->samples(), context_->backend().c_str(), renderer().c_str());
+    return (ec ? path : absolute).string();
+}
+}  // namespace
+
+void App::writeScreenshot(const std::string& path) {
+    // A failed screenshot is reported and the window goes on.
+    try {
+        writePng(path, target_->readPixels());
+        std::printf("%s: screenshot %s (%s)\n", config_.name.c_str(),
+                    absoluteForMessage(path).c_str(), frameDescription().c_str());
+    } catch (const Error& e) {
+        std::fprintf(stderr, "%s: screenshot not written: %s\n", config_.name.c_str(), e.what());
+    }
 }
 
 void App::finish() {
     finished_ = true;
+    // A run with GL errors fails before it writes anything: nothing it made is to be trusted.
+    checkGlErrors("end of run");
+    if (glErrorCount_ > 0) {
+        throw Error(std::to_string(glErrorCount_) +
+                    " OpenGL error(s) during the run; first: " + firstGlError_);
+    }
+    // The picture and the sample's own files, together or not at all.
+    OutputBatch batch;
+    fs::path picture;
     if (frameIndex_ >= 0) {
         const bool wantImage = !options_.output.empty() || (headless() && !options_.benchmark);
         if (wantImage) {
-            const std::string path =
-                options_.output.empty() ? config_.name + ".png" : options_.output;
-            writeFrame(path, "wrote");
+            picture = options_.output.empty() ? config_.name + ".png" : options_.output;
+            batch.add(picture, encodePng(target_->readPixels()));
         }
     }
-    checkGlErrors("end of run");
+    for (auto& [path, bytes] : outputFiles_) batch.add(path, std::move(bytes));
+    outputFiles_.clear();
+    batch.commit();
+    if (!picture.empty()) {
+        std::printf("%s: wrote %s (%s)\n", config_.name.c_str(),
+                    absoluteForMessage(picture).c_str(), frameDescription().c_str());
+    }
+    for (const fs::path& path : batch.paths()) {
+        if (path != picture) {
+            std::printf("%s: wrote %s\n", config_.name.c_str(), absoluteForMessage(path).c_str());
+        }
+    }
     if (options_.benchmark) {
         std::printf(
             "{\"sample\":\"%s\",\"backend\":\"%s\",\"renderer\":\"%s\",\"width\":%d,\"height\":%d,"
@@ -264,10 +309,6 @@ void App::finish() {
             precomputeSeconds_, startupSeconds_);
     }
     std::fflush(stdout);
-    if (glErrorCount_ > 0) {
-        throw Error(std::to_string(glErrorCount_) +
-                    " OpenGL error(s) during the run; first: " + firstGlError_);
-    }
 }
 
 void GLAD_API_PTR App::onDebugMessage(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei,

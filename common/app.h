@@ -11,9 +11,11 @@
 //     }
 #include <chrono>
 #include <deque>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -48,13 +50,18 @@ public:
     bool nextFrame();
 
     const Options& options() const { return options_; }
-    // The value of one of the sample's own flags, when given.
+    // The value of one of the sample's own flags, when given (already checked against its
+    // FlagSpec when the App was made).
     std::optional<std::string> flag(const std::string& name) const;
-    // A sample flag's value checked and converted; a bad value is a usage error (exit 2) that
-    // names the flag. `choices`: the allowed words, the first is the default.
-    std::string flagChoice(const std::string& name, const std::vector<std::string>& choices) const;
-    int flagInt(const std::string& name, int min, int max, int fallback) const;
-    float flagFloat(const std::string& name, float fallback) const;
+    // A sample flag's value converted: a Choice flag's word (its first choice when not given),
+    // an Integer or Number flag's value, or `fallback` when not given.
+    std::string flagChoice(const std::string& name) const;
+    int flagInt(const std::string& name, int fallback) const;
+    float flagNumber(const std::string& name, float fallback) const;
+
+    // A file to write together with the picture at the end of the run: the picture (when one is
+    // written) and every such file appear together, or none does (see output.h).
+    void addOutputFile(std::filesystem::path path, std::string bytes);
 
     FlyCamera& camera() { return camera_; }
     // A start pose found after the App was made (framing a model, say); --camera still wins.
@@ -89,7 +96,9 @@ private:
     void finish();
     void installDebugOutput();
     void checkGlErrors(const char* where);
-    void writeFrame(const std::string& path, const char* verb);
+    void writeScreenshot(const std::string& path);
+    std::string frameDescription() const;
+    const FlagSpec& sampleFlag(const std::string& name) const;
 
     AppConfig config_;
     Options options_;
@@ -109,6 +118,7 @@ private:
     double frameStart_ = 0.0;
     double precomputeSeconds_ = 0.0;
     std::vector<double> frameMilliseconds_;
+    std::vector<std::pair<std::filesystem::path, std::string>> outputFiles_;
     int screenshotCount_ = 0;
     bool noDisplayFallback_ = false;
     bool finished_ = false;

@@ -23,7 +23,10 @@ int reportFailure() {
     } catch (const ExitRequest& exit) {
         return exit.code;
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "error: %s\n%s", oneLine(e.what()).c_str(), e.usage().c_str());
+        // The usage first and the error last, so the line that says what is wrong is the one
+        // nearest the prompt (and what `2>&1 | tail -1` shows).
+        if (!e.usage().empty()) std::fprintf(stderr, "%s\n", e.usage().c_str());
+        std::fprintf(stderr, "error: %s\n", oneLine(e.what()).c_str());
         return 2;
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "error: out of memory\n");

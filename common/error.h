@@ -13,7 +13,7 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// A bad command line: the message, then the usage; exit code 2.
+// A bad command line: the usage, then the message as the last line; exit code 2.
 class UsageError : public Error {
 public:
     UsageError(const std::string& message, std::string usage)

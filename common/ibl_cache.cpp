@@ -1,7 +1,6 @@
 #include "ibl_cache.h"
 
 #include <cstdio>
-#include <cstdlib>
 
 #include "error.h"
 #include "ibl.h"
@@ -18,7 +17,7 @@ namespace {
 constexpr const char* kKeyName = "pbr.cacheKey";
 // The C++ side of the maps (the HDR decoder, the face order, the sizes of the mip chain): the
 // shaders are hashed into every key, this is counted by hand. Raise it when that code changes.
-constexpr const char* kCodeVersion = "pbr ibl cache 2";
+constexpr const char* kCodeVersion = "pbr ibl cache 3";
 
 // The shader code a map is made with, so that editing a shader makes its cached maps stale.
 std::string shaderCodeHash(const std::string& vertex, const std::string& fragment) {
@@ -35,8 +34,11 @@ std::string renderer() {
 }  // namespace
 
 std::vector<FlagSpec> iblFlags() {
-    return {{"--hdr", "FILE", "an equirectangular .hdr environment (default: the project's)"},
-            {"--no-cache", "", "compute the IBL maps even when the cache holds them"}};
+    return {FlagSpec::text("--hdr", "FILE",
+                           "an equirectangular .hdr environment (default: the project's)"),
+            FlagSpec::toggle("--no-cache",
+                             "compute the IBL maps even when the cache holds them, and leave the "
+                             "cache alone")};
 }
 
 fs::path environmentFile(const Options& options) {
@@ -47,17 +49,6 @@ fs::path environmentFile(const Options& options) {
 
 std::optional<fs::path> cacheDir(const Options& options) {
     return options.has("--no-cache") ? std::nullopt : defaultCacheDir();
-}
-
-std::optional<fs::path> defaultCacheDir() {
-    auto variable = [](const char* name) -> const char* {
-        const char* value = std::getenv(name);
-        return value && *value ? value : nullptr;
-    };
-    if (const char* dir = variable("PBR_CACHE_DIR")) return fs::path(dir);
-    if (const char* dir = variable("XDG_CACHE_HOME")) return fs::path(dir) / "pbr-samples";
-    if (const char* home = variable("HOME")) return fs::path(home) / ".cache" / "pbr-samples";
-    return std::nullopt;
 }
 
 std::string contentHash(std::string_view bytes) {
@@ -93,11 +84,18 @@ std::optional<KtxImage> IblCache::load(const fs::path& path, const std::string& 
     }
 }
 
-void IblCache::store(const fs::path& path, KtxImage image, const std::string& key) {
+KtxImage MapFile::withMetadata(KtxImage image) const {
     image.metadata[kKeyName] = key;
+    image.metadata["pbr.contents"] = contents;
     image.metadata["KTXorientation"] = "S=r,T=u";  // row 0 at t = 0, as GL uploads it
+    return image;
+}
+
+void IblCache::store(const MapFile& file, KtxImage image) {
     try {
-        writeKtx(path, image);
+        std::error_code ec;
+        fs::create_directories(*dir_, ec);  // the cache's own folder
+        writeKtx(*dir_ / file.name, file.withMetadata(std::move(image)));
     } catch (const Error& error) {
         std::fprintf(stderr, "warning: %s; not cached\n", error.what());
     }
@@ -113,29 +111,27 @@ T IblCache::timed(const std::function<T()>& compute) {
     return result;
 }
 
-TextureCube IblCache::cube(const std::string& file, const std::string& key,
-                           const std::function<TextureCube()>& compute) {
+TextureCube IblCache::cube(const MapFile& file, const std::function<TextureCube()>& compute) {
     if (!dir_) return timed(compute);
-    const fs::path path = *dir_ / file;
-    if (std::optional<KtxImage> image = load(path, key)) {
+    const fs::path path = *dir_ / file.name;
+    if (std::optional<KtxImage> image = load(path, file.key)) {
         try {
-            TextureCube cube = TextureCube::fromKtx(*image);
-            return cube;
+            return TextureCube::fromKtx(*image);
         } catch (const Error& error) {
             std::fprintf(stderr, "note: %s: %s; recomputing\n", displayPath(path).c_str(),
                          error.what());
         }
     }
     TextureCube cube = timed(compute);
-    store(path, cube.toKtx(), key);
+    store(file, cube.toKtx());
     return cube;
 }
 
-Texture2D IblCache::texture(const std::string& file, const std::string& key, KtxFormat format,
+Texture2D IblCache::texture(const MapFile& file, KtxFormat format,
                             const std::function<Texture2D()>& compute) {
     if (!dir_) return timed(compute);
-    const fs::path path = *dir_ / file;
-    if (std::optional<KtxImage> image = load(path, key)) {
+    const fs::path path = *dir_ / file.name;
+    if (std::optional<KtxImage> image = load(path, file.key)) {
         if (image->format == format && image->faces == 1) {
             return Texture2D::fromKtx(*image);
         }
@@ -143,7 +139,7 @@ Texture2D IblCache::texture(const std::string& file, const std::string& key, Ktx
                      displayPath(path).c_str());
     }
     Texture2D texture = timed(compute);
-    store(path, texture.toKtx(format), key);
+    store(file, texture.toKtx(format));
     return texture;
 }
 
@@ -156,13 +152,35 @@ IblEnvironment::IblEnvironment(IblCache& cache, fs::path hdr)
         "; renderer " + renderer();
 }
 
-std::string IblEnvironment::key(const std::string& what, const std::string& shaders) const {
-    return what + "; shaders " + shaders + "; from " + environmentKey_;
+MapFile IblEnvironment::environmentFile() const {
+    return {hdr_.stem().string() + ".environment.ktx", environmentKey_,
+            "environment cube map from " + hdr_.filename().string() + ", " +
+                std::to_string(kEnvironmentSize) + "^2, full mip chain"};
+}
+
+MapFile IblEnvironment::irradianceFile(int size, float sampleDelta) const {
+    return {hdr_.stem().string() + ".irradiance.ktx",
+            "irradiance " + std::to_string(size) + " delta " + std::to_string(sampleDelta) +
+                "; shaders " + shaderCodeHash("ibl/cubemap.vert", "ibl/irradiance.frag") +
+                "; from " + environmentKey_,
+            "diffuse irradiance / pi, " + std::to_string(size) + "^2 cube map"};
+}
+
+MapFile IblEnvironment::prefilteredFile(int size, int levels, int samples) const {
+    return {hdr_.stem().string() + ".prefiltered.ktx",
+            "prefiltered " + std::to_string(size) + " levels " + std::to_string(levels) +
+                " samples " + std::to_string(samples) + "; shaders " +
+                shaderCodeHash("ibl/cubemap.vert", "ibl/prefilter.frag") + "; from " +
+                environmentKey_,
+            "GGX-prefiltered specular cube map, " + std::to_string(size) +
+                "^2, mip m for "
+                "roughness m / " +
+                std::to_string(levels - 1) + ", " + std::to_string(samples) + " samples"};
 }
 
 const TextureCube& IblEnvironment::environmentMap() {
     if (!environment_) {
-        environment_ = cache_.cube(hdr_.stem().string() + ".environment.ktx", environmentKey_, [&] {
+        environment_ = cache_.cube(environmentFile(), [&] {
             return equirectangularToCubemap(Texture2D(readHdr(hdr_)), kEnvironmentSize);
         });
     }
@@ -170,30 +188,35 @@ const TextureCube& IblEnvironment::environmentMap() {
 }
 
 TextureCube IblEnvironment::irradianceMap(int size, float sampleDelta) {
-    return cache_.cube(
-        hdr_.stem().string() + ".irradiance.ktx",
-        key("irradiance " + std::to_string(size) + " delta " + std::to_string(sampleDelta),
-            shaderCodeHash("ibl/cubemap.vert", "ibl/irradiance.frag")),
-        [&] { return convolveIrradiance(environmentMap(), size, sampleDelta); });
+    return cache_.cube(irradianceFile(size, sampleDelta),
+                       [&] { return convolveIrradiance(environmentMap(), size, sampleDelta); });
 }
 
 TextureCube IblEnvironment::prefilteredMap(int size, int levels, int samples) {
-    return cache_.cube(hdr_.stem().string() + ".prefiltered.ktx",
-                       key("prefiltered " + std::to_string(size) + " levels " +
-                               std::to_string(levels) + " samples " + std::to_string(samples),
-                           shaderCodeHash("ibl/cubemap.vert", "ibl/prefilter.frag")),
+    return cache_.cube(prefilteredFile(size, levels, samples),
                        [&] { return prefilterSpecular(environmentMap(), size, levels, samples); });
 }
 
-Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channels) {
+KtxFormat brdfLutFormat(BrdfLutChannels channels) {
+    return channels == BrdfLutChannels::ScaleBiasSheen ? KtxFormat::RGBA16F : KtxFormat::RG16F;
+}
+
+MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels) {
     const bool sheen = channels == BrdfLutChannels::ScaleBiasSheen;
     const std::string name =
         std::string(sheen ? "brdf_lut_sheen_" : "brdf_lut_") + std::to_string(size);
-    const std::string key = std::string(kCodeVersion) + "; " + name + " samples " +
-                            std::to_string(samples) + "; shaders " +
-                            shaderCodeHash("ibl/fullscreen.vert", "ibl/brdf_lut.frag") +
-                            "; renderer " + renderer();
-    return cache.texture(name + ".ktx", key, sheen ? KtxFormat::RGBA16F : KtxFormat::RG16F,
+    return {name + ".ktx",
+            std::string(kCodeVersion) + "; " + name + " samples " + std::to_string(samples) +
+                "; shaders " + shaderCodeHash("ibl/fullscreen.vert", "ibl/brdf_lut.frag") +
+                "; renderer " + renderer(),
+            "BRDF LUT " + std::to_string(size) + "^2, " + std::to_string(samples) +
+                " samples; x = NdotV, y = roughness at texel centres; R = GGX scale, G = GGX "
+                "bias to F0" +
+                (sheen ? ", B = Charlie sheen" : "")};
+}
+
+Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channels) {
+    return cache.texture(brdfLutFile(size, samples, channels), brdfLutFormat(channels),
                          [&] { return computeBrdfLut(size, samples, channels); });
 }
 

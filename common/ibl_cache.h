@@ -21,22 +21,30 @@ namespace pbr {
 std::vector<FlagSpec> iblFlags();
 // The environment --hdr names, else the project's (sunny_courtyard.hdr).
 std::filesystem::path environmentFile(const Options& options);
-// The cache folder to use: none with --no-cache, else defaultCacheDir().
+// The cache folder to use: none with --no-cache, else defaultCacheDir() (paths.h).
 std::optional<std::filesystem::path> cacheDir(const Options& options);
 
-// Where the cache lives: $PBR_CACHE_DIR, else $XDG_CACHE_HOME/pbr-samples, else
-// $HOME/.cache/pbr-samples; nullopt when none of them is set.
-std::optional<std::filesystem::path> defaultCacheDir();
+// A precomputed map as a file: the name it has in the cache (and in 06's output folder), the key
+// it is made under, and what it holds. The cache and 06 write it with the same metadata, so the
+// two files are the same bytes.
+struct MapFile {
+    std::string name;      // "sunny_courtyard.irradiance.ktx"
+    std::string key;       // input hash, parameters, shader code, renderer
+    std::string contents;  // one line for people: sizes, what each channel holds
+
+    // `image` with this map's metadata: pbr.cacheKey, pbr.contents and its orientation.
+    KtxImage withMetadata(KtxImage image) const;
+};
 
 class IblCache {
 public:
     // `dir` nullopt: no cache, everything is computed (what --no-cache asks for).
     explicit IblCache(std::optional<std::filesystem::path> dir);
 
-    // <dir>/<file> when it holds a map made under `key`, else `compute()` (stored for next time).
-    TextureCube cube(const std::string& file, const std::string& key,
-                     const std::function<TextureCube()>& compute);
-    Texture2D texture(const std::string& file, const std::string& key, KtxFormat format,
+    // <dir>/<file.name> when it holds a map made under `file.key`, else `compute()` (stored for
+    // next time).
+    TextureCube cube(const MapFile& file, const std::function<TextureCube()>& compute);
+    Texture2D texture(const MapFile& file, KtxFormat format,
                       const std::function<Texture2D()>& compute);
 
     // Seconds spent computing maps (not loading them), GPU work finished.
@@ -44,7 +52,7 @@ public:
 
 private:
     std::optional<KtxImage> load(const std::filesystem::path& path, const std::string& key);
-    void store(const std::filesystem::path& path, KtxImage image, const std::string& key);
+    void store(const MapFile& file, KtxImage image);
     template <typename T>
     T timed(const std::function<T()>& compute);
 
@@ -66,9 +74,12 @@ public:
     TextureCube irradianceMap(int size = 32, float sampleDelta = kIrradianceSampleDelta);
     TextureCube prefilteredMap(int size = 128, int levels = 5, int samples = 1024);
 
-private:
-    std::string key(const std::string& what, const std::string& shaders) const;
+    // What each map is as a file (see MapFile): 06 writes the maps under these names.
+    MapFile environmentFile() const;
+    MapFile irradianceFile(int size = 32, float sampleDelta = kIrradianceSampleDelta) const;
+    MapFile prefilteredFile(int size = 128, int levels = 5, int samples = 1024) const;
 
+private:
     IblCache& cache_;
     std::filesystem::path hdr_;
     static constexpr int kEnvironmentSize = 512;
@@ -76,7 +87,10 @@ private:
     std::optional<TextureCube> environment_;
 };
 
-// The BRDF LUT (see computeBrdfLut) through the cache.
+// The BRDF LUT (see computeBrdfLut) through the cache, and what it is as a file: RG16F for
+// ScaleBias, RGBA16F for ScaleBiasSheen.
 Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channels);
+MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels);
+KtxFormat brdfLutFormat(BrdfLutChannels channels);
 
 }  // namespace pbr

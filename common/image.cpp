@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "error.h"
+#include "output.h"
 #include "paths.h"
 
 namespace pbr {
@@ -60,17 +61,35 @@ Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& wha
     return image;
 }
 
-void writePng(const fs::path& path, const Image& image) {
+namespace {
+// stb's writers hand over the encoded bytes in pieces; they are kept in memory, then written whole.
+void appendBytes(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+}
+}  // namespace
+
+std::string encodePng(const Image& image) {
     if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 ||
         image.pixels.size() !=
             size_t(image.width) * size_t(image.height) * size_t(image.channels)) {
-        throw Error(displayPath(path) + ": cannot write an empty or malformed image");
+        throw Error("cannot encode an empty or malformed image as PNG");
     }
-    std::error_code ec;
-    if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-    const int ok = stbi_write_png(path.c_str(), image.width, image.height, image.channels,
-                                  image.pixels.data(), image.width * image.channels);
-    if (!ok) throw Error(displayPath(path) + ": cannot write PNG (is the folder writable?)");
+    std::string bytes;
+    if (!stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, image.channels,
+                                image.pixels.data(), image.width * image.channels)) {
+        throw Error("PNG encoding failed");
+    }
+    return bytes;
+}
+
+void writePng(const fs::path& path, const Image& image) {
+    std::string bytes;
+    try {
+        bytes = encodePng(image);
+    } catch (const Error& e) {
+        throw Error(displayPath(path) + ": " + e.what());
+    }
+    writeFileAtomically(path, bytes);
 }
 
 namespace {
@@ -195,11 +214,12 @@ void writeHdr(const fs::path& path, const HdrImage& image) {
         image.pixels.size() != size_t(image.width) * size_t(image.height) * 3) {
         throw Error(displayPath(path) + ": cannot write an empty or malformed HDR image");
     }
-    std::error_code ec;
-    if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-    if (!stbi_write_hdr(path.c_str(), image.width, image.height, 3, image.pixels.data())) {
-        throw Error(displayPath(path) + ": cannot write HDR (is the folder writable?)");
+    std::string bytes;
+    if (!stbi_write_hdr_to_func(appendBytes, &bytes, image.width, image.height, 3,
+                                image.pixels.data())) {
+        throw Error(displayPath(path) + ": HDR encoding failed");
     }
+    writeFileAtomically(path, bytes);
 }
 
 Image flipRows(const Image& image) {

@@ -28,7 +28,9 @@ Image readImage(const std::filesystem::path& path, int wantChannels = 0);
 // Decodes an image file's bytes held in memory; `what` names it in the error.
 Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& what,
                   int wantChannels = 0);
-// Writes an 8-bit PNG (same bytes for the same pixels). Throws Error("<path>: <reason>").
+// An 8-bit PNG file's bytes (the same bytes for the same pixels). Throws Error when malformed.
+std::string encodePng(const Image& image);
+// Writes an 8-bit PNG, whole or not at all (see output.h). Throws Error("<path>: <reason>").
 void writePng(const std::filesystem::path& path, const Image& image);
 // The image with its rows in the opposite order (GL reads bottom row first).
 Image flipRows(const Image& image);
@@ -50,7 +52,8 @@ struct HdrImage {
 HdrImage readHdr(const std::filesystem::path& path);
 // The same from the file's bytes; `name` is what the error messages call it.
 HdrImage decodeHdr(std::string_view bytes, const std::string& name);
-// Writes a Radiance .hdr (RGBE, run-length encoded); same bytes for the same pixels.
+// Writes a Radiance .hdr (RGBE, run-length encoded; same bytes for the same pixels), whole or not
+// at all. Throws Error("<path>: <reason>").
 void writeHdr(const std::filesystem::path& path, const HdrImage& image);
 
 // How far `actual` is from `expected` (same size; colour channels only, alpha ignored).

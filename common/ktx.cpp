@@ -1,7 +1,5 @@
 #include "ktx.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -9,6 +7,7 @@
 #include <sstream>
 
 #include "error.h"
+#include "output.h"
 #include "paths.h"
 
 namespace pbr {
@@ -94,9 +93,8 @@ size_t KtxImage::imageBytes(int level) const {
     return w * h * size_t(channels()) * size_t(bytesPerChannel());
 }
 
-void writeKtx(const fs::path& path, const KtxImage& image) {
-    const std::string where = displayPath(path) + ": ";
-    check(image, where);
+std::string encodeKtx(const KtxImage& image) {
+    check(image, "");
     const FormatInfo& f = info(image.format);
     std::string out(reinterpret_cast<const char*>(kIdentifier), 12);
     std::string keyValues;
@@ -121,24 +119,17 @@ void writeKtx(const fs::path& path, const KtxImage& image) {
             out.append(padTo4(data.size()) - data.size(), '\0');
         }
     }
-    std::error_code ec;
-    if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-    // a name of this process's own: two processes storing the same file never share a temporary
-    const fs::path temporary = path.string() + "." + std::to_string(::getpid()) + ".tmp";
-    {
-        std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-        file.write(out.data(), std::streamsize(out.size()));
-        if (!file) {
-            fs::remove(temporary, ec);
-            throw Error(where + "cannot write (is the folder writable?)");
-        }
+    return out;
+}
+
+void writeKtx(const fs::path& path, const KtxImage& image) {
+    std::string bytes;
+    try {
+        bytes = encodeKtx(image);
+    } catch (const Error& e) {
+        throw Error(displayPath(path) + ": " + e.what());
     }
-    fs::rename(temporary, path, ec);  // whole or not at all: a reader never sees half a file
-    if (ec) {
-        const std::string reason = ec.message();
-        fs::remove(temporary, ec);
-        throw Error(where + "cannot write: " + reason);
-    }
+    writeFileAtomically(path, bytes);
 }
 
 KtxImage readKtx(const fs::path& path) {

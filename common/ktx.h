@@ -26,7 +26,10 @@ struct KtxImage {
     size_t imageBytes(int level) const;  // one face of `level`
 };
 
-// Throws Error("<path>: <reason>") when the image is inconsistent or the file cannot be written.
+// The bytes of a KTX 1 file holding `image`; throws Error when the image is inconsistent.
+std::string encodeKtx(const KtxImage& image);
+// Writes `image` as a KTX 1 file, whole or not at all (see output.h). Throws Error("<path>:
+// <reason>") when the image is inconsistent or the file cannot be written.
 void writeKtx(const std::filesystem::path& path, const KtxImage& image);
 // Throws Error("<path>: <reason>") for anything but a complete, consistent KTX 1 file of one of
 // the formats above (wrong identifier, truncated, sizes that do not add up, ...).

@@ -1,6 +1,8 @@
 #pragma once
 // The command line every sample shares (see DESIGN.md), plus the flags a sample adds of its own.
-// Pure: no GL, no window, so it is unit tested directly.
+// A sample's flags say what values they take, so that parseOptions checks every flag, common or
+// the sample's own, before any window or GL context exists. Pure: no GL, no window, so it is
+// unit tested directly.
 #include <map>
 #include <optional>
 #include <span>
@@ -9,11 +11,26 @@
 
 namespace pbr {
 
-// A flag a sample adds: "--lights" with value name "N", or a switch when valueName is empty.
+// A flag a sample adds, made with one of the functions below: "--lights N" (a whole number in a
+// range), "--filter trilinear|nearest" (one of some words), "--model FILE" (any text), a switch.
 struct FlagSpec {
-    std::string name;
-    std::string valueName;
+    enum class Kind { Switch, Text, OutputFolder, Integer, Number, Choice };
+    std::string name;       // "--lights"
+    std::string valueName;  // "N", "FILE", "a|b"; empty for a switch
     std::string help;
+    Kind kind = Kind::Text;
+    double min = 0.0, max = 0.0;       // Integer, Number: the allowed range, both ends included
+    std::vector<std::string> choices;  // Choice: the allowed words; the first is the default
+
+    static FlagSpec toggle(std::string name, std::string help);
+    static FlagSpec text(std::string name, std::string valueName, std::string help);
+    // A folder the sample writes files into: it must exist (checked before rendering).
+    static FlagSpec outputFolder(std::string name, std::string valueName, std::string help);
+    static FlagSpec integer(std::string name, std::string valueName, std::string help, int min,
+                            int max);
+    static FlagSpec number(std::string name, std::string valueName, std::string help, double min,
+                           double max);
+    static FlagSpec choice(std::string name, std::vector<std::string> choices, std::string help);
 };
 
 // --camera x,y,z[,yaw,pitch]: a start pose for the fly camera (yaw/pitch in degrees).
@@ -38,14 +55,22 @@ struct Options {
     bool has(const std::string& flag) const { return sampleFlags.count(flag) != 0; }
 };
 
-// Parses argv[1..]. Throws UsageError (message names the flag and the reason) on a bad flag.
+// The largest --msaa the parser takes; the GL's own limit (4 on llvmpipe) is checked when the
+// render target is made.
+inline constexpr int kMaxMsaaSamples = 64;
+// --camera coordinates beyond this are refused: the view would hold nothing (far plane 100).
+inline constexpr double kMaxCameraCoordinate = 1.0e6;
+
+// Parses argv[1..]. Every value is checked here, the sample's own flags included. Throws
+// UsageError (the message names the flag and the reason) on the first bad flag.
 Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec> sampleFlags);
 
-// The usage text: every common flag and the sample's own, one a line.
+// The usage text: the common flags and the sample's own in two aligned columns, the environment
+// variables the suite reads, and the keys.
 std::string usageText(const std::string& program, std::span<const FlagSpec> sampleFlags);
 
-// Helpers for sample flags, throwing UsageError naming the flag when the value is bad.
+// Helpers for flag values, throwing UsageError naming the flag when the value is bad.
 int parseIntFlag(const std::string& flag, const std::string& value, int min, int max);
-float parseFloatFlag(const std::string& flag, const std::string& value);
+double parseNumberFlag(const std::string& flag, const std::string& value, double min, double max);
 
 }  // namespace pbr

@@ -13,9 +13,13 @@ namespace pbr {
 namespace fs = std::filesystem;
 
 namespace {
-fs::path fromEnvOr(const char* variable, const char* fallback) {
-    const char* value = std::getenv(variable);
-    return fs::path(value && *value ? value : fallback);
+const char* variable(const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value ? value : nullptr;
+}
+fs::path fromEnvOr(const char* name, const char* fallback) {
+    const char* value = variable(name);
+    return fs::path(value ? value : fallback);
 }
 }  // namespace
 
@@ -26,13 +30,35 @@ fs::path resourceDir() {
     return fromEnvOr("PBR_RESOURCE_DIR", PBR_RESOURCE_DIR);
 }
 fs::path materialDir() {
-    return fromEnvOr("PBR_MATERIAL_DIR", PBR_MATERIAL_DIR);
+    return resourceDir() / "materials";
 }
 fs::path modelDir() {
-    return fromEnvOr("PBR_MODEL_DIR", PBR_MODEL_DIR);
+    return resourceDir() / "models";
 }
 fs::path environmentDir() {
-    return fromEnvOr("PBR_ENVIRONMENT_DIR", PBR_ENVIRONMENT_DIR);
+    return resourceDir() / "environments";
+}
+
+std::optional<fs::path> defaultCacheDir() {
+    if (const char* dir = variable("PBR_CACHE_DIR")) return fs::path(dir);
+    if (const char* dir = variable("XDG_CACHE_HOME")) return fs::path(dir) / "pbr-samples";
+    if (const char* home = variable("HOME")) return fs::path(home) / ".cache" / "pbr-samples";
+    return std::nullopt;
+}
+
+std::vector<EnvironmentVariable> environmentVariables() {
+    return {
+        {"PBR_SHADER_DIR", "the GLSL files (default: " PBR_SHADER_DIR ")"},
+        {"PBR_RESOURCE_DIR",
+         "the assets the build makes: materials/, models/, environments/ "
+         "(default: " PBR_RESOURCE_DIR ")"},
+        {"PBR_CACHE_DIR",
+         "the IBL samples' precomputed maps (default: "
+         "$XDG_CACHE_HOME/pbr-samples, else $HOME/.cache/pbr-samples)"},
+        {"DISPLAY, WAYLAND_DISPLAY",
+         "a window needs one of them; without, the sample renders "
+         "offscreen and says so"},
+    };
 }
 
 std::string displayPath(const fs::path& path) {

@@ -1,21 +1,32 @@
 #pragma once
-// Where the executables find their data, from any working directory.
+// Where the executables find their data, from any working directory, and the environment
+// variables that move it. Pure: no GL.
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace pbr {
 
 // shaders/ of the source tree, or $PBR_SHADER_DIR when set.
 std::filesystem::path shaderDir();
-// resources/ of the source tree, or $PBR_RESOURCE_DIR when set.
+// The assets the build makes from the recipes in resources/ (build/<preset>/resources), or
+// $PBR_RESOURCE_DIR when set; it holds materials/, models/ and environments/.
 std::filesystem::path resourceDir();
-// The material sets the build bakes (build/.../resources/materials), or $PBR_MATERIAL_DIR.
-std::filesystem::path materialDir();
-// The models the build writes (build/.../resources/models), or $PBR_MODEL_DIR.
-std::filesystem::path modelDir();
-// The HDR environments the build writes (build/.../resources/environments), or
-// $PBR_ENVIRONMENT_DIR.
-std::filesystem::path environmentDir();
+std::filesystem::path materialDir();     // resourceDir() / "materials": the PBR material sets
+std::filesystem::path modelDir();        // resourceDir() / "models": the project's glTF assets
+std::filesystem::path environmentDir();  // resourceDir() / "environments": its HDR environments
+// Where the IBL samples keep their precomputed maps: $PBR_CACHE_DIR, else
+// $XDG_CACHE_HOME/pbr-samples, else $HOME/.cache/pbr-samples; nullopt when none is set.
+std::optional<std::filesystem::path> defaultCacheDir();
+
+// Every environment variable the samples read, with what it does, for --help and the README.
+struct EnvironmentVariable {
+    std::string name;
+    std::string meaning;
+};
+std::vector<EnvironmentVariable> environmentVariables();
+
 // A path as a user wants to read it in a message: relative to the working directory when it lies
 // below it, absolute otherwise.
 std::string displayPath(const std::filesystem::path& path);

@@ -532,8 +532,10 @@ void printReport(const Report& report, const std::string& environment, const std
 
 // The flags of this tool. --hdr as the IBL samples spell it.
 std::vector<pbr::FlagSpec> toolFlags() {
-    return {{"--hdr", "FILE", "an equirectangular .hdr environment (default: the project's)"},
-            {"--constant", "", "a constant environment of radiance 1 instead (every error ~0)"}};
+    return {pbr::FlagSpec::text("--hdr", "FILE",
+                                "an equirectangular .hdr environment (default: the project's)"),
+            pbr::FlagSpec::toggle("--constant",
+                                  "a constant environment of radiance 1 instead (every error ~0)")};
 }
 
 void measure(const pbr::App& app) {

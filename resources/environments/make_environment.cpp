@@ -6,6 +6,7 @@
 // Deterministic: the same bytes every run. --preview writes it tone-mapped (Reinhard, gamma 2.2).
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "error.h"
@@ -96,6 +97,10 @@ int main(int argc, char** argv) try {
             image.pixels[i + 1] = color.g;
             image.pixels[i + 2] = color.b;
         }
+    }
+    if (const std::filesystem::path folder = std::filesystem::path(out).parent_path();
+        !folder.empty()) {
+        std::filesystem::create_directories(folder);  // the build's own folder
     }
     pbr::writeHdr(out, image);
     if (!preview.empty()) {

@@ -264,6 +264,7 @@ MaterialSet bake(const std::string& name, int size) {
 
 void write(const MaterialSet& set, const std::filesystem::path& dir) {
     const std::filesystem::path folder = dir / set.name;
+    std::filesystem::create_directories(folder);  // the build's own folder
     writePng(folder / "albedo.png", set.albedo);
     writePng(folder / "normal.png", set.normal);
     writePng(folder / "metallic.png", set.metallic);

@@ -11,13 +11,13 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "error.h"
 #include "image.h"
+#include "output.h"
 
 namespace {
 
@@ -228,7 +228,7 @@ int main(int argc, char** argv) try {
     }
     while (bin.size() % 4) bin += '\0';
 
-    std::ofstream json(dir / "unlit_showcase.gltf");
+    std::ostringstream json;
     json << "{\n\"asset\":{\"version\":\"2.0\",\"generator\":\"pbr-samples "
             "resources/models/make_unlit_showcase\"},\n"
          << "\"extensionsUsed\":[\"KHR_materials_unlit\"],\n\"scene\":0,\n\"scenes\":[{\"nodes\":["
@@ -242,7 +242,8 @@ int main(int argc, char** argv) try {
          << "\"buffers\":[{\"uri\":\"unlit_showcase.bin\",\"byteLength\":" << bin.size() << "}],\n"
          << "\"bufferViews\":[" << views.str() << "],\n\"accessors\":[" << accessors.str()
          << "]\n}\n";
-    std::ofstream(dir / "unlit_showcase.bin", std::ios::binary) << bin;
+    pbr::writeFileAtomically(dir / "unlit_showcase.gltf", json.str());
+    pbr::writeFileAtomically(dir / "unlit_showcase.bin", bin);
     pbr::writePng(dir / "unlit_showcase_texture.png", texture());
     return 0;
 } catch (...) {

@@ -17,10 +17,13 @@ int main(int argc, char** argv) try {
         {.name = "01_lighting",
          .title = "01 lighting: Cook-Torrance, 4 point lights",
          .cameraPosition = {0.0f, 0.0f, 23.0f},  // the whole grid; the text starts at (0,0,3)
-         .flags = {{"--lights", "N", "use the first N of the 4 point lights (default 4)"},
-                   {"--roughness-offset", "D", "add D to every sphere's roughness (default 0)"}}});
-    const int lightCount = app.flagInt("--lights", 0, 4, 4);
-    const float roughnessOffset = app.flagFloat("--roughness-offset", 0.0f);
+         .flags = {pbr::FlagSpec::integer(
+                       "--lights", "N", "use the first N of the 4 point lights (default 4)", 0, 4),
+                   pbr::FlagSpec::number("--roughness-offset", "D",
+                                         "add D (-1 to 1) to every sphere's roughness (default 0)",
+                                         -1.0, 1.0)}});
+    const int lightCount = app.flagInt("--lights", 4);
+    const float roughnessOffset = app.flagNumber("--roughness-offset", 0.0f);
 
     pbr::Shader& shader = app.shader("common/pbr.vert", "01_lighting/pbr.frag");
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));

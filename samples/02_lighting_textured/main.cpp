@@ -14,13 +14,17 @@ int main(int argc, char** argv) try {
         {.name = "02_lighting_textured",
          .title = "02 lighting textured: rusted iron from five maps",
          .cameraPosition = {0.0f, 0.0f, 23.0f},
-         .flags = {{"--material-dir", "DIR",
-                    "a folder with albedo, normal, metallic, roughness (and ao) .png/.jpg"},
-                   {"--tangent-frame", "mesh|derivatives",
-                    "tangents from the sphere (default) or from screen-space derivatives"},
-                   {"--filter", "trilinear|nearest", "texture filtering (default trilinear)"}}});
-    const std::string frame = app.flagChoice("--tangent-frame", {"mesh", "derivatives"});
-    const std::string filter = app.flagChoice("--filter", {"trilinear", "nearest"});
+         .flags = {pbr::FlagSpec::text("--material-dir", "DIR",
+                                       "a folder of PBR maps: albedo (or basecolor, diffuse, "
+                                       "color), normal, metallic, roughness, optional ao; any "
+                                       "prefix, .png or .jpg (default: the baked rusted iron)"),
+                   pbr::FlagSpec::choice(
+                       "--tangent-frame", {"mesh", "derivatives"},
+                       "tangents from the sphere (default) or from screen-space derivatives"),
+                   pbr::FlagSpec::choice("--filter", {"trilinear", "nearest"},
+                                         "texture filtering (default trilinear)")}});
+    const std::string frame = app.flagChoice("--tangent-frame");
+    const std::string filter = app.flagChoice("--filter");
 
     pbr::Shader& shader = app.shader("common/pbr_tangent.vert", "02_lighting_textured/pbr.frag");
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));

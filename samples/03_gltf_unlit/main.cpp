@@ -12,8 +12,9 @@ int main(int argc, char** argv) try {
     pbr::App app(argc, argv,
                  {.name = "03_gltf_unlit",
                   .title = "03 glTF unlit",
-                  .flags = {{"--model", "FILE",
-                             "a .gltf or .glb to draw unlit (default: the project's showcase)"}}});
+                  .flags = {pbr::FlagSpec::text(
+                      "--model", "FILE",
+                      "a .gltf or .glb to draw unlit (default: the project's showcase)")}});
 
     const pbr::Model model = pbr::loadModel(
         app.flag("--model").value_or((pbr::modelDir() / "unlit_showcase.gltf").string()));

@@ -22,7 +22,8 @@ constexpr std::array<const char*, 5> kMaterials = {"rusted_iron", "gold", "grass
 
 int main(int argc, char** argv) try {
     std::vector<pbr::FlagSpec> flags = pbr::iblFlags();
-    flags.push_back({"--textured", "", "five spheres in the project's material sets"});
+    flags.push_back(
+        pbr::FlagSpec::toggle("--textured", "five spheres in the project's material sets"));
     pbr::App app(argc, argv,
                  {.name = "05_ibl_specular",
                   .title = "05 IBL: specular",

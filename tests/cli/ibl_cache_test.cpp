@@ -117,9 +117,9 @@ TEST(BrdfLutTool, WritesTheMapsAsKtxTheRightWayRound) {
                                      (dir / "06.png").string(), "--no-cache", "--hdr",
                                      (environmentDir() / "sunny_courtyard.hdr").string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    EXPECT_NE(run.out.find("brdf_lut.ktx"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("brdf_lut_sheen_256.ktx"), std::string::npos) << run.out;
 
-    const KtxImage lut = readKtx(dir / "brdf_lut.ktx");
+    const KtxImage lut = readKtx(dir / "brdf_lut_sheen_256.ktx");
     ASSERT_EQ(lut.format, KtxFormat::RGBA16F);
     ASSERT_EQ(lut.width, 256);
     ASSERT_EQ(lut.height, 256);
@@ -139,14 +139,39 @@ TEST(BrdfLutTool, WritesTheMapsAsKtxTheRightWayRound) {
             << i << ", " << j;
     }
 
-    const KtxImage irradiance = readKtx(dir / "sunny_courtyard_irradiance.ktx");
+    const KtxImage irradiance = readKtx(dir / "sunny_courtyard.irradiance.ktx");
     EXPECT_EQ(irradiance.faces, 6);
     EXPECT_EQ(irradiance.width, 32);
     EXPECT_EQ(irradiance.levels, 1);
-    const KtxImage prefiltered = readKtx(dir / "sunny_courtyard_prefiltered.ktx");
+    const KtxImage prefiltered = readKtx(dir / "sunny_courtyard.prefiltered.ktx");
     EXPECT_EQ(prefiltered.faces, 6);
     EXPECT_EQ(prefiltered.width, 128);
     EXPECT_EQ(prefiltered.levels, 5);
+    for (const KtxImage* image : {&lut, &irradiance, &prefiltered}) {
+        EXPECT_FALSE(image->metadata.at("pbr.contents").empty());
+        EXPECT_FALSE(image->metadata.at("pbr.cacheKey").empty());
+    }
+}
+
+// 05's README promises that 06 writes the maps 05 caches: the same names, the same bytes (the
+// LUT differs on purpose: 05 takes LearnOpenGL's 512^2 RG16F, 06 bakes the cookbook's 256^2 with
+// sheen, and each is named after its size and channels).
+TEST(BrdfLutTool, WritesTheFilesThe05CacheHolds) {
+    const fs::path dir = testOutputDir("brdf_lut_same_files");
+    fs::create_directory(dir / "baked");
+    const RunResult run =
+        runSample({"06_brdf_lut", "--headless", "--size", "64x36", "--output",
+                   (dir / "06.png").string(), "--ktx-dir", (dir / "baked").string(), "--no-cache",
+                   "--hdr", (environmentDir() / "sunny_courtyard.hdr").string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Run05 cached = run05(dir / "cache", dir / "05.png");
+    for (const char* name : {"sunny_courtyard.irradiance.ktx", "sunny_courtyard.prefiltered.ktx"}) {
+        const std::string baked = readBytes(dir / "baked" / name);
+        ASSERT_GT(baked.size(), 1000u) << name;
+        EXPECT_TRUE(baked == readBytes(dir / "cache" / name)) << name << " differs";
+    }
+    EXPECT_TRUE(fs::exists(dir / "baked" / "brdf_lut_sheen_256.ktx"));
+    EXPECT_TRUE(fs::exists(dir / "cache" / "brdf_lut_512.ktx"));
 }
 
 }  // namespace

@@ -186,7 +186,8 @@ TEST(MaterialDir, BadFlagValuesAreUsageErrors) {
         EXPECT_EQ(run.exitCode, 2);
         const auto lines = run.errLines();
         ASSERT_FALSE(lines.empty());
-        EXPECT_EQ(lines[0].rfind("error: " + flag + ": '" + value + "'", 0), 0u) << lines[0];
+        EXPECT_EQ(lines.back().rfind("error: " + flag + ": '" + value + "'", 0), 0u)
+            << lines.back();
     }
 }
 

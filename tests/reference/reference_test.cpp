@@ -175,6 +175,7 @@ TEST(Reference, LightingTextured02MatchesTheCpuBrdfWithTexels) {
         }
     }
     const fs::path set = dir / "random_texels";
+    fs::create_directory(set);
     writePng(set / "albedo.png", albedo);
     writePng(set / "normal.png", normal);
     writePng(set / "metallic.png", metallic);

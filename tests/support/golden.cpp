@@ -11,6 +11,7 @@
 #include <set>
 #include <sstream>
 
+#include "output.h"
 #include "paths.h"
 
 namespace pbr::test {
@@ -70,12 +71,18 @@ bool updating() {
 
 void writeMetadata(const fs::path& path, const std::string& name, const Image& image,
                    const std::string& renderer, const GoldenGate& gate) {
-    std::ofstream out(path);
+    std::ostringstream out;
     out << "{\n  \"sample\": \"" << name << "\",\n  \"size\": \"" << image.width << "x"
         << image.height << "\",\n  \"renderer\": \"" << renderer << "\",\n  \"gate\": {"
         << "\"channel_threshold\": " << gate.channelThreshold
         << ", \"max_fraction_over\": " << gate.maxFractionOver
         << ", \"min_psnr_db\": " << gate.minPsnr << "}\n}\n";
+    writeFileAtomically(path, out.str());
+}
+
+// A copy that is whole or absent, like every file the suite writes.
+void copyFile(const fs::path& from, const fs::path& to) {
+    writeFileAtomically(to, readBytes(from));
 }
 
 std::string htmlEscape(const std::string& text) {
@@ -182,7 +189,7 @@ void rebuildReport() {
         (html.rfind("<!-- status: fail", 0) == 0 ? failures : others) += html;
     }
     const std::string body = failures + others;
-    std::ofstream page(dir / "index.html.tmp");
+    std::ostringstream page;
     page << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
          << "<title>Golden report: " << failed << " failed</title>\n<style>\n"
          << "body{font:14px/1.4 sans-serif;margin:1.5em;background:#fafafa;color:#222}\n"
@@ -202,8 +209,7 @@ void rebuildReport() {
          << " updated. Each entry: the golden (expected), this run (actual) and "
          << "their difference amplified 16 times; the gate's limits beside the metrics.</p>\n"
          << body << "</body></html>\n";
-    page.close();
-    fs::rename(dir / "index.html.tmp", dir / "index.html");
+    writeFileAtomically(dir / "index.html", page.str());
     if (lock >= 0) ::close(lock);
 }
 
@@ -212,12 +218,10 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
     const fs::path dir = goldenReportDir();
     fs::create_directories(dir / "img");
     fs::create_directories(dir / "entries");
-    fs::copy_file(expected, dir / "img" / (entry.id + ".expected.png"),
-                  fs::copy_options::overwrite_existing);
-    fs::copy_file(actual, dir / "img" / (entry.id + ".actual.png"),
-                  fs::copy_options::overwrite_existing);
+    copyFile(expected, dir / "img" / (entry.id + ".expected.png"));
+    copyFile(actual, dir / "img" / (entry.id + ".actual.png"));
     writePng(dir / "img" / (entry.id + ".diff.png"), diffImage);
-    std::ofstream(dir / "entries" / (entry.id + ".html")) << entryHtml(entry);
+    writeFileAtomically(dir / "entries" / (entry.id + ".html"), entryHtml(entry));
     rebuildReport();
 }
 
@@ -242,7 +246,7 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
     entry.gate = gate;
 
     if (updating()) {
-        fs::copy_file(render.image, goldenPath, fs::copy_options::overwrite_existing);
+        copyFile(render.image, goldenPath);
         writeMetadata(fs::path(PBR_GOLDEN_DIR) / (name + ".json"), name, actual, render.renderer,
                       gate);
         entry.status = "updated";
@@ -274,10 +278,8 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
     const fs::path keptActual = dir / (name + ".actual.png");
     const fs::path keptExpected = dir / (name + ".expected.png");
     const fs::path diffPath = dir / (name + ".diff.png");
-    if (fs::absolute(render.image) != fs::absolute(keptActual)) {
-        fs::copy_file(render.image, keptActual, fs::copy_options::overwrite_existing);
-    }
-    fs::copy_file(goldenPath, keptExpected, fs::copy_options::overwrite_existing);
+    if (fs::absolute(render.image) != fs::absolute(keptActual)) copyFile(render.image, keptActual);
+    copyFile(goldenPath, keptExpected);
     writePng(diffPath, diffImage);
     return ::testing::AssertionFailure()
            << name << " (" << render.backend << ") differs from its golden: " << verdict.summary

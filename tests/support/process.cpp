@@ -1,9 +1,11 @@
 #include "support/process.h"
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -60,6 +62,11 @@ RunResult runSample(std::vector<std::string> argv, const RunOptions& options) {
         for (const std::string& name : options.unsetEnv) unsetenv(name.c_str());
         if (!options.workingDirectory.empty() && chdir(options.workingDirectory.c_str()) != 0)
             _exit(126);
+        if (options.fileSizeLimit > 0) {
+            std::signal(SIGXFSZ, SIG_IGN);  // ignored across exec: the write returns EFBIG
+            const rlimit limit{options.fileSizeLimit, options.fileSizeLimit};
+            if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(125);
+        }
         std::vector<char*> args;
         for (std::string& arg : argv) args.push_back(arg.data());
         args.push_back(nullptr);

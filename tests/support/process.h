@@ -19,6 +19,9 @@ struct RunOptions {
     std::map<std::string, std::string> setEnv{};  // variables to set
     std::vector<std::string> unsetEnv{};          // variables to remove
     std::filesystem::path workingDirectory{};     // empty: inherit
+    // A nearly full disk, for the child alone: no file it writes may grow past this many bytes
+    // (RLIMIT_FSIZE; the write fails with EFBIG instead of killing it). 0: no limit.
+    size_t fileSizeLimit = 0;
 };
 
 // argv[0] is a sample name ("01_lighting") or a path.

@@ -1,13 +1,21 @@
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 #include "error.h"
 #include "options.h"
 
 namespace pbr {
 namespace {
 
-const std::vector<FlagSpec> kSampleFlags = {{"--lights", "N", "lights"},
-                                            {"--textured", "", "switch"}};
+const std::vector<FlagSpec> kSampleFlags = {
+    FlagSpec::integer("--lights", "N", "lights", 0, 4),
+    FlagSpec::toggle("--textured", "switch"),
+    FlagSpec::number("--roughness-offset", "D", "offset", -1.0, 1.0),
+    FlagSpec::choice("--filter", {"trilinear", "nearest"}, "filtering"),
+    FlagSpec::text("--model", "FILE", "a model"),
+    FlagSpec::outputFolder("--ktx-dir", "DIR", "a folder"),
+};
 
 Options parse(std::vector<std::string> args) {
     return parseOptions(args, kSampleFlags);
@@ -72,30 +80,104 @@ TEST(Options, SampleFlagsAndSwitches) {
     EXPECT_EQ(parseIntFlag("--lights", "2", 0, 4), 2);
 }
 
+TEST(Options, DashHIsHelp) {
+    EXPECT_TRUE(parse({"-h"}).help);
+    EXPECT_TRUE(parse({"--help"}).help);
+    EXPECT_EQ(errorOf({"-x"}), "unexpected argument '-x'");
+}
+
 TEST(Options, BadInputNamesTheFlag) {
     EXPECT_EQ(errorOf({"--bogus"}), "unknown flag '--bogus'");
     EXPECT_EQ(errorOf({"stray"}), "unexpected argument 'stray'");
     EXPECT_EQ(errorOf({"--size"}), "--size: missing value");
-    EXPECT_EQ(errorOf({"--size", "640"}), "--size: '640' is not WxH");
+    const std::string notWxH = "is not WxH (width x height in pixels, e.g. 1280x720)";
+    EXPECT_EQ(errorOf({"--size", "640"}), "--size: '640' " + notWxH);
+    EXPECT_EQ(errorOf({"--size", "10x"}), "--size: '10x' " + notWxH);
+    EXPECT_EQ(errorOf({"--size", "x10"}), "--size: 'x10' " + notWxH);
+    EXPECT_EQ(errorOf({"--size", "1x2x3"}), "--size: '1x2x3' " + notWxH);
     EXPECT_EQ(errorOf({"--size", "0x10"}), "--size: 0 is out of range [1, 16384]");
     EXPECT_EQ(errorOf({"--size", "axb"}), "--size: 'a' is not a whole number");
+    EXPECT_EQ(errorOf({"--size", "99999999999x10"}),
+              "--size: 99999999999 is out of range [1, 16384]");
     EXPECT_EQ(errorOf({"--msaa", "3"}), "--msaa: 3 is not 0, 1 or a power of two");
+    EXPECT_EQ(errorOf({"--msaa", "128"}), "--msaa: 128 is out of range [0, 64]");
     EXPECT_EQ(errorOf({"--frames", "0"}), "--frames: 0 is out of range [1, 1000000]");
-    EXPECT_EQ(errorOf({"--time", "nan"}), "--time: 'nan' is not a number");
+    EXPECT_EQ(errorOf({"--time", "nan"}), "--time: 'nan' is not a finite number");
+    EXPECT_EQ(errorOf({"--time", "soon"}), "--time: 'soon' is not a number");
     EXPECT_EQ(errorOf({"--camera", "1,2"}), "--camera: '1,2' is not x,y,z or x,y,z,yaw,pitch");
+    EXPECT_EQ(errorOf({"--camera", "1e40,0,0"}), "--camera: 1e40 is out of range [-1e+06, 1e+06]");
+    EXPECT_EQ(errorOf({"--camera", "1e400,0,0"}),
+              "--camera: 1e400 is out of range [-1e+06, 1e+06]");
+    EXPECT_EQ(errorOf({"--camera", "inf,0,0"}), "--camera: 'inf' is not a finite number");
+    EXPECT_EQ(errorOf({"--camera", "1,,2"}), "--camera: empty number in '1,,2'");
     EXPECT_EQ(errorOf({"--camera", "0,0,3,0,95"}), "--camera: pitch must lie in [-89, 89]");
     EXPECT_EQ(errorOf({"--headless=yes"}), "--headless: takes no value");
     EXPECT_EQ(errorOf({"--textured=1"}), "--textured: takes no value");
     EXPECT_EQ(errorOf({"--lights"}), "--lights: missing value");
 }
 
-TEST(Options, UsageListsCommonAndSampleFlags) {
+// A sample's own flags are checked in the same pass as the common ones, before any context.
+TEST(Options, SampleFlagValuesAreCheckedByTheirKind) {
+    EXPECT_EQ(errorOf({"--lights", "5"}), "--lights: 5 is out of range [0, 4]");
+    EXPECT_EQ(errorOf({"--lights", "two"}), "--lights: 'two' is not a whole number");
+    EXPECT_EQ(errorOf({"--roughness-offset", "nan"}),
+              "--roughness-offset: 'nan' is not a finite number");
+    EXPECT_EQ(errorOf({"--roughness-offset", "2"}),
+              "--roughness-offset: 2 is out of range [-1, 1]");
+    EXPECT_EQ(errorOf({"--filter", "foo"}), "--filter: 'foo' is not trilinear or nearest");
+    EXPECT_EQ(errorOf({"--model", ""}), "--model: empty value");
+    EXPECT_EQ(errorOf({"--ktx-dir="}), "--ktx-dir: empty value");
+    const Options o = parse({"--roughness-offset", "-0.25", "--filter", "nearest"});
+    EXPECT_EQ(o.sampleFlags.at("--roughness-offset"), "-0.25");
+    EXPECT_EQ(o.sampleFlags.at("--filter"), "nearest");
+}
+
+TEST(Options, ChoiceFlagsNameTheirWords) {
+    EXPECT_EQ(kSampleFlags[3].valueName, "trilinear|nearest");
+}
+
+TEST(Options, UsageListsCommonAndSampleFlagsAndTheEnvironment) {
     const std::string usage = usageText("01_lighting", kSampleFlags);
-    for (const char* flag : {"--help", "--headless", "--output", "--size", "--frames", "--time",
-                             "--msaa", "--camera", "--benchmark", "--lights", "--textured"}) {
+    for (const char* flag :
+         {"--help", "--headless", "--output", "--size", "--frames", "--time", "--msaa", "--camera",
+          "--benchmark", "--backend", "--lights", "--textured", "-h"}) {
         EXPECT_NE(usage.find(flag), std::string::npos) << flag;
     }
+    for (const char* variable :
+         {"PBR_SHADER_DIR", "PBR_RESOURCE_DIR", "PBR_CACHE_DIR", "XDG_CACHE_HOME", "DISPLAY"}) {
+        EXPECT_NE(usage.find(variable), std::string::npos) << variable;
+    }
     EXPECT_EQ(usage.rfind("usage: 01_lighting", 0), 0u);
+}
+
+// Two columns that never run into each other: every help text starts at one column, at least
+// two spaces after its flag (or on the line below a long one), and no line is over 100 wide.
+TEST(Options, UsageColumnsAreAligned) {
+    const std::string usage = usageText("01_lighting", kSampleFlags);
+    std::istringstream lines(usage);
+    std::string line;
+    size_t helpColumn = 0;
+    int flagLines = 0;
+    while (std::getline(lines, line)) {
+        EXPECT_LE(line.size(), 100u) << line;
+        if (line.rfind("  ", 0) != 0) continue;  // headings
+        const size_t nameEnd = line.find("  ", 2);
+        const size_t help = line.find_first_not_of(' ', 2);
+        if (help > 2) {  // a continuation line: only help text
+            if (helpColumn) {
+                EXPECT_EQ(help, helpColumn) << line;
+            }
+            continue;
+        }
+        if (nameEnd == std::string::npos) continue;  // a long flag alone; its help follows
+        const size_t start = line.find_first_not_of(' ', nameEnd);
+        ASSERT_NE(start, std::string::npos) << line;
+        if (!helpColumn) helpColumn = start;
+        EXPECT_EQ(start, helpColumn) << line;
+        EXPECT_GE(start - nameEnd, 2u) << line;
+        ++flagLines;
+    }
+    EXPECT_GE(flagLines, 14);
 }
 
 }  // namespace

@@ -1,0 +1,117 @@
+// Every file the suite writes is whole or absent (common/output.h): the checks a full disk, a
+// missing folder or a folder in the way must pass, in-process. The same through whole samples
+// (a nearly full disk, /dev/full, 06's batch) is in tests/cli/output_test.cpp.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+
+#include "error.h"
+#include "output.h"
+#include "support/process.h"
+
+namespace pbr {
+namespace {
+
+namespace fs = std::filesystem;
+using test::readBytes;
+using test::testOutputDir;
+
+// The names in `dir`, hidden temporaries included.
+std::vector<std::string> entries(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string errorOf(const std::function<void()>& write) {
+    try {
+        write();
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(Output, WritesAndReplacesWhole) {
+    const fs::path dir = testOutputDir("output_replace");
+    writeFileAtomically(dir / "a.txt", "first");
+    writeFileAtomically(dir / "a.txt", "second, longer");
+    EXPECT_EQ(readBytes(dir / "a.txt"), "second, longer");
+    EXPECT_EQ(entries(dir), std::vector<std::string>{"a.txt"});  // no temporary left
+}
+
+TEST(Output, MissingFolderIsNamedAndNothingIsCreated) {
+    const fs::path dir = testOutputDir("output_missing_folder");
+    const std::string error =
+        errorOf([&] { writeFileAtomically(dir / "nowhere" / "a.txt", "bytes"); });
+    EXPECT_NE(error.find("a.txt: no such folder"), std::string::npos) << error;
+    EXPECT_TRUE(entries(dir).empty());
+}
+
+TEST(Output, AFolderInTheWayIsNamed) {
+    const fs::path dir = testOutputDir("output_folder_in_the_way");
+    fs::create_directory(dir / "taken");
+    const std::string error = errorOf([&] { writeFileAtomically(dir / "taken", "bytes"); });
+    EXPECT_NE(error.find("taken: is a directory"), std::string::npos) << error;
+    EXPECT_EQ(entries(dir), std::vector<std::string>{"taken"});
+}
+
+// /dev/full refuses every byte: the error says so, and no temporary appears anywhere.
+TEST(Output, AFullDeviceIsAnErrorNotASilentLoss) {
+    const std::string error = errorOf([] { writeFileAtomically("/dev/full", "bytes"); });
+    EXPECT_NE(error.find("/dev/full: cannot write: No space left on device"), std::string::npos)
+        << error;
+    writeFileAtomically("/dev/null", "bytes");  // a device that takes them is fine
+}
+
+// A batch appears whole or not at all: the second file cannot be written, so the first (written
+// before it in the batch) must not appear either, and an older file there keeps its bytes.
+TEST(Output, ABatchIsAllOrNothing) {
+    const fs::path dir = testOutputDir("output_batch");
+    writeFileAtomically(dir / "one.txt", "old");
+    {
+        OutputBatch batch;
+        batch.add(dir / "one.txt", "new");
+        batch.add(dir / "two.txt", "new");
+        batch.add(dir / "missing" / "three.txt", "new");
+        const std::string error = errorOf([&] { batch.commit(); });
+        EXPECT_NE(error.find("three.txt: no such folder"), std::string::npos) << error;
+    }
+    EXPECT_EQ(readBytes(dir / "one.txt"), "old");
+    EXPECT_EQ(entries(dir), std::vector<std::string>{"one.txt"});
+
+    OutputBatch batch;
+    batch.add(dir / "one.txt", "new");
+    batch.add(dir / "two.txt", "new");
+    batch.add("/dev/full", "new");  // devices are written after every temporary
+    EXPECT_NE(errorOf([&] { batch.commit(); }).find("No space left"), std::string::npos);
+    EXPECT_EQ(readBytes(dir / "one.txt"), "old");
+    EXPECT_EQ(entries(dir), std::vector<std::string>{"one.txt"});
+}
+
+TEST(Output, ALinkStaysALink) {
+    const fs::path dir = testOutputDir("output_link");
+    writeFileAtomically(dir / "target.txt", "old");
+    fs::create_symlink("target.txt", dir / "link.txt");
+    writeFileAtomically(dir / "link.txt", "new");
+    EXPECT_TRUE(fs::is_symlink(dir / "link.txt"));
+    EXPECT_EQ(readBytes(dir / "target.txt"), "new");
+}
+
+TEST(Output, PathChecksBeforeRendering) {
+    const fs::path dir = testOutputDir("output_checks");
+    EXPECT_EQ(errorOf([&] { requireWritableFilePath(dir, "out/"); }), "out/: is a directory");
+    EXPECT_EQ(errorOf([&] { requireWritableFilePath(dir / "no" / "x.png", "no/x.png"); }),
+              "no/x.png: no such folder '" + (dir / "no").string() + "'");
+    EXPECT_EQ(errorOf([&] { requireWritableFilePath(dir / "x.png", "x.png"); }), "no error");
+    EXPECT_EQ(errorOf([&] { requireOutputFolder(dir / "no", "--ktx-dir no"); }),
+              "--ktx-dir no: no such folder");
+    writeFileAtomically(dir / "file", "");
+    EXPECT_EQ(errorOf([&] { requireOutputFolder(dir / "file", "--ktx-dir file"); }),
+              "--ktx-dir file: not a folder");
+}
+
+}  // namespace
+}  // namespace pbr
