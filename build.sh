@@ -5,7 +5,32 @@
 #   ./build.sh test          install what is missing, build, run every test through ctest: in the
 #                            Release build, then again in the AddressSanitizer + UBSan build
 set -euo pipefail
-cd "$(dirname "$0")"
+
+usage() {
+    cat <<'USAGE'
+usage: ./build.sh run [sample flags]   install what is missing, build, run sample 01: a window
+                                       when there is a display, else an offscreen PNG and its path
+       ./build.sh test                 install what is missing, build, run every test (Release,
+                                       then AddressSanitizer + UBSan)
+       ./build.sh -h | --help          this help
+Flags after "run" go to the sample (./build.sh run --help lists them); relative paths in them
+are taken from the folder you run build.sh in.
+USAGE
+}
+
+case "${1:-}" in
+    -h | --help) usage; exit 0 ;;
+    run | test) ;;
+    "") usage >&2; echo "build.sh: error: say run or test" >&2; exit 2 ;;
+    *) usage >&2; echo "build.sh: error: unknown argument '$1'" >&2; exit 2 ;;
+esac
+if [ "$1" = test ] && [ $# -gt 1 ]; then
+    usage >&2; echo "build.sh: error: test takes no arguments ('$2')" >&2; exit 2
+fi
+
+caller_dir="$PWD"  # the sample runs here, so its relative paths mean what the caller meant
+repo_dir="$(cd "$(dirname "$0")" && pwd)"
+cd "$repo_dir"
 
 PACKAGES=(cmake g++ make pkg-config libglfw3-dev python3-glad libglm-dev libstb-dev
           libassimp-dev libegl-dev libegl-mesa0 libgtest-dev assimp-testmodels)
@@ -72,7 +97,8 @@ case "${1:-}" in
         shift
         install_missing
         build default
-        exec build/release/bin/01_lighting "$@"
+        cd "$caller_dir"
+        exec "$repo_dir/build/release/bin/01_lighting" "$@"
         ;;
     test)
         install_missing
@@ -82,9 +108,5 @@ case "${1:-}" in
         echo "build.sh: the same tests under AddressSanitizer + UndefinedBehaviorSanitizer" >&2
         build asan
         ctest --preset asan -j "$(nproc)"
-        ;;
-    *)
-        echo "usage: ./build.sh run [sample flags] | ./build.sh test" >&2
-        exit 2
         ;;
 esac

@@ -21,40 +21,57 @@ namespace pbr {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+bool startsWith(const std::vector<std::uint8_t>& bytes, std::initializer_list<std::uint8_t> magic) {
+    return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin());
+}
+
+// stb_image's failure codes ("outofdata", "bad zlib header", ...) in words a user understands.
+std::string decodeFailure(const std::vector<std::uint8_t>& bytes) {
+    const std::string code = stbi_failure_reason() ? stbi_failure_reason() : "";
+    if (code == "outofmem") return "out of memory while decoding the image";
+    if (code == "too large") return "image too large to decode";
+    if (code == "0-pixel image" || code == "0 width" || code == "invalid width")
+        return "the image has no pixels";
+    const bool png = startsWith(bytes, {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'});
+    const bool jpeg = startsWith(bytes, {0xff, 0xd8, 0xff});
+    if (png) {
+        if (code == "1/2/4/8/16-bit only") return "unsupported PNG bit depth";
+        return "truncated or damaged PNG data";
+    }
+    if (jpeg) {
+        if (code == "only 8-bit") return "unsupported JPEG (12-bit samples)";
+        if (code == "no header height") return "unsupported JPEG (height given after the pixels)";
+        return "truncated or damaged JPEG data";
+    }
+    if (code == "unknown image type") return "not a PNG or JPEG image";
+    return "damaged or unsupported image data";
+}
+
+}  // namespace
+
 Image readImage(const fs::path& path, int wantChannels) {
     std::error_code ec;
     if (!fs::exists(path, ec)) throw Error(displayPath(path) + ": no such file");
     if (fs::is_directory(path, ec)) throw Error(displayPath(path) + ": is a directory");
-    if (fs::file_size(path, ec) == 0) throw Error(displayPath(path) + ": empty file");
-    int width = 0, height = 0, channels = 0;
-    std::unique_ptr<stbi_uc, void (*)(void*)> data(
-        stbi_load(path.c_str(), &width, &height, &channels, wantChannels), stbi_image_free);
-    if (!data) {
-        const char* reason = stbi_failure_reason();
-        throw Error(displayPath(path) + ": cannot decode image (" +
-                    (reason ? reason : "unknown reason") + ")");
-    }
-    Image image;
-    image.width = width;
-    image.height = height;
-    image.channels = wantChannels ? wantChannels : channels;
-    image.pixels.assign(data.get(),
-                        data.get() + size_t(width) * size_t(height) * size_t(image.channels));
-    return image;
+    const std::string text = readTextFile(path);
+    if (text.empty()) throw Error(displayPath(path) + ": empty file");
+    return decodeImage(std::vector<std::uint8_t>(text.begin(), text.end()), displayPath(path),
+                       wantChannels);
 }
 
 Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& what,
                   int wantChannels) {
     if (bytes.empty()) throw Error(what + ": empty image");
+    if (bytes.size() > size_t(std::numeric_limits<int>::max()))
+        throw Error(what + ": image file too large");
     int width = 0, height = 0, channels = 0;
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
         stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels,
                               wantChannels),
         stbi_image_free);
-    if (!data) {
-        const char* reason = stbi_failure_reason();
-        throw Error(what + ": cannot decode image (" + (reason ? reason : "unknown reason") + ")");
-    }
+    if (!data) throw Error(what + ": " + decodeFailure(bytes));
     Image image{width, height, wantChannels ? wantChannels : channels, {}};
     image.pixels.assign(data.get(),
                         data.get() + size_t(width) * size_t(height) * size_t(image.channels));

@@ -6,11 +6,13 @@
 
 #include <stb_image.h>
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <set>
 
 #include "error.h"
+#include "gltf_file.h"
 #include "paths.h"
 
 namespace pbr {
@@ -198,13 +200,28 @@ Model loadModel(const fs::path& file) {
     if (!fs::exists(file, ec)) throw Error(displayPath(file) + ": no such file");
     if (!fs::is_regular_file(file, ec)) throw Error(displayPath(file) + ": not a file");
     if (fs::file_size(file, ec) == 0) throw Error(displayPath(file) + ": empty file");
+    const std::string where = displayPath(file) + ": ";
+    bool isGltf = false;
+    {
+        // Assimp's answer to a broken glTF container is "no suitable reader": say what is wrong.
+        std::string extension = file.extension().string();
+        for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+        const std::string bytes = readTextFile(file);
+        const size_t first = bytes.find_first_not_of(" \t\r\n");
+        const bool json = first != std::string::npos && bytes[first] == '{';
+        if (bytes.starts_with("glTF") || json || extension == ".gltf") {
+            if (const auto problem = gltfContainerError(bytes)) throw Error(where + *problem);
+        } else if (extension == ".glb") {
+            throw Error(where + "not a binary glTF file (it does not start with 'glTF')");
+        }
+        isGltf = bytes.starts_with("glTF") || json;
+    }
 
     Assimp::Importer importer;
     const aiScene* scene =
         importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_GenSmoothNormals |
                                              aiProcess_CalcTangentSpace | aiProcess_SortByPType |
                                              aiProcess_ValidateDataStructure);
-    const std::string where = displayPath(file) + ": ";
     if (!scene) {
         std::string reason = importer.GetErrorString();
         while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' '))
@@ -239,9 +256,18 @@ Model loadModel(const fs::path& file) {
     }
     for (unsigned i = 0; i < scene->mNumMaterials; ++i)
         model.materials.push_back(reader.material(scene->mMaterials[i]));
+    // Assimp appends a nameless material of its own to every glTF scene for the primitives that
+    // name none: glTF's default material (all factors at their defaults, so white).
+    if (isGltf && !model.materials.empty() && model.materials.back().name.empty()) {
+        model.materials.back().gltfDefault = true;
+    }
     std::set<const aiNode*> seen;
     reader.visit(scene->mRootNode, glm::mat4(1.0f), 0, seen);
     if (model.primitives.empty()) throw Error(where + "no triangles to draw");
+    for (const ModelPrimitive& primitive : model.primitives) {
+        if (model.materials[size_t(primitive.material)].gltfDefault)
+            ++model.primitivesWithoutMaterial;
+    }
 
     model.boundsMin = glm::vec3(INFINITY);
     model.boundsMax = glm::vec3(-INFINITY);
@@ -278,8 +304,14 @@ Image loadTextureImage(const Model& model, const TextureRef& ref, int wantChanne
 GpuModel::GpuModel(const Model& model, TextureFilter filter) {
     auto upload = [&](const TextureRef& ref, ColorSpace colorSpace) {
         if (!ref.present() || textures_.count({ref, colorSpace})) return;
-        textures_[{ref, colorSpace}] =
-            std::make_unique<Texture2D>(loadTextureImage(model, ref), colorSpace, filter);
+        Image image;
+        try {
+            image = loadTextureImage(model, ref);
+        } catch (const Error& e) {
+            if (ref.embedded >= 0) throw;  // the message names the model already
+            throw Error(displayPath(model.file) + ": texture " + e.what());
+        }
+        textures_[{ref, colorSpace}] = std::make_unique<Texture2D>(image, colorSpace, filter);
     };
     for (const Material& m : model.materials) {
         upload(m.baseColorTexture, ColorSpace::Srgb);

@@ -54,6 +54,9 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
+    // glTF's default material, for primitives that name none: every factor at its default (a
+    // white, fully metallic, fully rough surface), no textures.
+    bool gltfDefault = false;
 };
 
 struct ModelPrimitive {
@@ -74,6 +77,7 @@ struct Model {
     std::vector<Material> materials;
     std::vector<EmbeddedImage> embeddedImages;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // of all primitives, in world space
+    int primitivesWithoutMaterial = 0;           // drawn with glTF's default material
 };
 
 // Loads and checks a model. Throws Error("<file>: <reason>") for anything that cannot be drawn

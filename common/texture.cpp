@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "error.h"
+#include "material_folder.h"
 #include "paths.h"
 
 namespace pbr {
@@ -215,39 +216,21 @@ Texture2D Texture2D::load(const std::filesystem::path& path, ColorSpace colorSpa
     return Texture2D(readImage(path), colorSpace, filter);
 }
 
-std::optional<std::filesystem::path> findMap(const std::filesystem::path& dir,
-                                             const std::string& name) {
-    for (const char* extension : {".png", ".jpg", ".jpeg"}) {
-        const std::filesystem::path candidate = dir / (name + extension);
-        std::error_code ec;
-        if (std::filesystem::exists(candidate, ec)) return candidate;
-    }
-    return std::nullopt;
-}
-
 PbrTextures loadPbrTextures(const std::filesystem::path& dir, TextureFilter filter) {
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec)) {
-        throw Error(displayPath(dir) + ": " +
-                    (std::filesystem::exists(dir, ec) ? "not a folder" : "no such folder"));
+    const MaterialFiles files = findMaterialFiles(dir);
+    Image normal = readImage(files.normal);
+    if (files.normalConvention == NormalConvention::DirectX && normal.channels >= 3) {
+        // DirectX normal maps point green down: turn them into the OpenGL convention.
+        for (size_t i = 1; i < normal.pixels.size(); i += size_t(normal.channels))
+            normal.pixels[i] = std::uint8_t(255 - normal.pixels[i]);
     }
-    auto load = [&](const char* name, ColorSpace colorSpace) {
-        const auto path = findMap(dir, name);
-        if (!path) {
-            throw Error(displayPath(dir / (std::string(name) + ".png")) +
-                        ": missing (a material folder needs albedo, normal, metallic and roughness "
-                        "as .png or .jpg; ao is optional)");
-        }
-        return Texture2D::load(*path, colorSpace, filter);
-    };
-    Texture2D albedo = load("albedo", ColorSpace::Srgb);
-    Texture2D normal = load("normal", ColorSpace::Linear);
-    Texture2D metallic = load("metallic", ColorSpace::Linear);
-    Texture2D roughness = load("roughness", ColorSpace::Linear);
-    Texture2D ao = findMap(dir, "ao")
-                       ? load("ao", ColorSpace::Srgb)
-                       : Texture2D(Image{1, 1, 3, {255, 255, 255}}, ColorSpace::Srgb, filter);
-    return {std::move(albedo), std::move(normal), std::move(metallic), std::move(roughness),
+    Texture2D albedo = Texture2D::load(files.albedo, ColorSpace::Srgb, filter);
+    Texture2D normalMap(normal, ColorSpace::Linear, filter);
+    Texture2D metallic = Texture2D::load(files.metallic, ColorSpace::Linear, filter);
+    Texture2D roughness = Texture2D::load(files.roughness, ColorSpace::Linear, filter);
+    Texture2D ao = files.ao ? Texture2D::load(*files.ao, ColorSpace::Srgb, filter)
+                            : Texture2D(Image{1, 1, 3, {255, 255, 255}}, ColorSpace::Srgb, filter);
+    return {std::move(albedo), std::move(normalMap), std::move(metallic), std::move(roughness),
             std::move(ao)};
 }
 

@@ -68,10 +68,12 @@ private:
     int size_, levels_;
 };
 
-// A PBR material folder in the tutorial's layout: albedo, normal, metallic, roughness and ao,
-// each as .png (or .jpg / .jpeg). ao is optional (white when missing, as the text suggests);
-// any other missing map is an Error naming it. Maps may differ in size: each is sampled by uv.
-// albedo and ao are decoded from sRGB; normal, metallic and roughness are linear.
+// A PBR material folder: albedo, normal, metallic, roughness and optionally ao, under the names
+// real texture sets use (see material_folder.h), each .png, .jpg or .jpeg. Without ao, ao is
+// white, as the text suggests; any other missing map, and two files for one map, are an Error
+// naming the folder. Maps may differ in size: each is sampled by uv. albedo and ao are decoded
+// from sRGB; normal, metallic and roughness are linear; a DirectX normal map is flipped to
+// OpenGL's convention (green up).
 struct PbrTextures {
     Texture2D albedo, normal, metallic, roughness, ao;
 
@@ -80,10 +82,5 @@ struct PbrTextures {
 };
 PbrTextures loadPbrTextures(const std::filesystem::path& dir,
                             TextureFilter filter = TextureFilter::Trilinear);
-
-// The file a map of a material folder comes from: <dir>/<name>.png, .jpg or .jpeg, whichever
-// exists; nullopt when none does.
-std::optional<std::filesystem::path> findMap(const std::filesystem::path& dir,
-                                             const std::string& name);
 
 }  // namespace pbr

@@ -1,6 +1,8 @@
 // 03 gltf_unlit: the cookbook's first glTF step. A glTF 2.0 model loaded through Assimp and drawn
 // with KHR_materials_unlit: colour = baseColorFactor x vertex colour x baseColorTexture, turning
 // about Y with time. See README.md beside this file.
+#include <cstdio>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app.h"
@@ -18,6 +20,12 @@ int main(int argc, char** argv) try {
 
     const pbr::Model model = pbr::loadModel(
         app.flag("--model").value_or((pbr::modelDir() / "unlit_showcase.gltf").string()));
+    if (model.primitivesWithoutMaterial > 0) {
+        std::fprintf(stderr,
+                     "note: %s: %d primitive(s) name no material; drawn in glTF's default "
+                     "material (base colour white)\n",
+                     pbr::displayPath(model.file).c_str(), model.primitivesWithoutMaterial);
+    }
     const pbr::GpuModel gpuModel(model);
     const pbr::Texture2D white(pbr::Image{1, 1, 3, {255, 255, 255}}, pbr::ColorSpace::Srgb);
     pbr::Shader& shader = app.shader("03_gltf_unlit/unlit.vert", "03_gltf_unlit/unlit.frag");
@@ -30,7 +38,9 @@ int main(int argc, char** argv) try {
 
     glEnable(GL_DEPTH_TEST);
     while (app.nextFrame()) {
-        glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+        // Mid grey, not the text's white: glTF's default material is white, and a model in it
+        // must not vanish into the background. (Stored as is: the target holds sRGB values.)
+        glClearColor(0.3f, 0.3f, 0.3f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
         shader.use();

@@ -156,8 +156,87 @@ TEST(MaterialDir, EachRequiredMapMissing) {
         const fs::path dir = testOutputDir(std::string("material_missing_") + map);
         const fs::path set = writePlainSet(dir / "set", makeMaps());
         fs::remove(set / (std::string(map) + ".png"));
-        expectOneLineError(set, std::string(map) + ".png", "missing");
+        expectOneLineError(set, "set: missing the " + std::string(map) + " map",
+                           "after any prefix");
     }
+}
+
+// The names real sets use: a prefix, another word for the map, any case, a resolution tag. Each
+// folder holds the plain set's pixels under such names and must draw the very same bytes.
+TEST(MaterialDir, DownloadedSetNamesGiveTheSamePicture) {
+    const fs::path dir = testOutputDir("material_names");
+    const TestMaps m = makeMaps();
+    const SampleRender plain = renderSet(writePlainSet(dir / "plain", m), dir / "plain.png");
+    ASSERT_EQ(plain.run.exitCode, 0) << plain.run.err;
+    const std::vector<std::vector<std::string>> layouts = {
+        // albedo, normal, metallic, roughness, ao
+        {"rustediron2_basecolor.png", "rustediron2_normal.png", "rustediron2_metallic.png",
+         "rustediron2_roughness.png", "rustediron2_ao.png"},  // freepbr
+        {"Bricks076C_1K_Color.PNG", "Bricks076C_1K_NormalGL.PNG", "Bricks076C_1K_Metalness.PNG",
+         "Bricks076C_1K_Roughness.PNG", "Bricks076C_1K_AmbientOcclusion.PNG"},  // ambientCG
+        {"brick_wall_diff_4k.png", "brick_wall_nor_gl_4k.png", "brick_wall_metal_4k.png",
+         "brick_wall_rough_4k.png", "brick_wall_ao_4k.png"},  // Poly Haven
+        {"Diffuse.png", "Normal.png", "Metallic.png", "Roughness.png", "Occlusion.png"},
+        {"base_color.png", "normal-ogl.png", "metalness.png", "roughness.png",
+         "ambient_occlusion.png"},
+    };
+    int index = 0;
+    for (const auto& names : layouts) {
+        const fs::path set = dir / ("set" + std::to_string(index++));
+        fs::create_directories(set);
+        writePng(set / names[0], Image{kSize, kSize, 3, m.albedo});
+        writePng(set / names[1], Image{kSize, kSize, 3, m.normal});
+        writePng(set / names[2], Image{kSize, kSize, 1, m.metallic});
+        writePng(set / names[3], Image{kSize, kSize, 1, m.roughness});
+        writePng(set / names[4], Image{kSize, kSize, 1, m.ao});
+        writePng(set / "preview_height.png", Image{2, 2, 1, {0, 0, 0, 0}});  // not a map: ignored
+        const SampleRender render = renderSet(set, set.string() + ".png");
+        ASSERT_EQ(render.run.exitCode, 0) << names[0] << ": " << render.run.err;
+        EXPECT_TRUE(readBytes(render.image) == readBytes(plain.image)) << names[0];
+    }
+}
+
+// A DirectX normal map (green pointing down) is flipped on load: stored so, it draws exactly what
+// the OpenGL map draws; beside an OpenGL map, the OpenGL one is used.
+TEST(MaterialDir, DirectXNormalMapsAreFlipped) {
+    const fs::path dir = testOutputDir("material_directx");
+    const TestMaps m = makeMaps();
+    const SampleRender plain = renderSet(writePlainSet(dir / "plain", m), dir / "plain.png");
+    std::vector<std::uint8_t> directX = m.normal;
+    for (size_t i = 1; i < directX.size(); i += 3) directX[i] = std::uint8_t(255 - directX[i]);
+
+    const fs::path set = writePlainSet(dir / "dx", m);
+    fs::remove(set / "normal.png");
+    writePng(set / "wall_normal_dx.png", Image{kSize, kSize, 3, directX});
+    const SampleRender flipped = renderSet(set, dir / "dx.png");
+    ASSERT_EQ(flipped.run.exitCode, 0) << flipped.run.err;
+    EXPECT_TRUE(readBytes(flipped.image) == readBytes(plain.image));
+
+    writePng(set / "wall_normal_gl.png", Image{kSize, kSize, 3, m.normal});
+    const SampleRender both = renderSet(set, dir / "both.png");
+    ASSERT_EQ(both.run.exitCode, 0) << both.run.err;
+    EXPECT_TRUE(readBytes(both.image) == readBytes(plain.image));
+
+    // Without the flip the picture would differ: the test sees the convention.
+    fs::remove(set / "wall_normal_gl.png");
+    fs::remove(set / "wall_normal_dx.png");
+    writePng(set / "wall_normal.png", Image{kSize, kSize, 3, directX});
+    const SampleRender unflipped = renderSet(set, dir / "unflipped.png");
+    EXPECT_FALSE(readBytes(unflipped.image) == readBytes(plain.image));
+}
+
+// Two files for one map: one line naming both.
+TEST(MaterialDir, TwoFilesForOneMapAreNamed) {
+    const fs::path dir = testOutputDir("material_ambiguous");
+    const TestMaps m = makeMaps();
+    const fs::path set = writePlainSet(dir / "set", m);
+    writePng(set / "BaseColor.png", Image{kSize, kSize, 3, m.albedo});
+    expectOneLineError(set, "2 files for the albedo map (BaseColor.png and albedo.png)",
+                       "keep one");
+    const fs::path jpeg = writePlainSet(dir / "jpeg", m);
+    stbi_write_jpg((jpeg / "roughness.jpg").c_str(), kSize, kSize, 1, m.roughness.data(), 95);
+    expectOneLineError(jpeg, "2 files for the roughness map (roughness.jpg and roughness.png)",
+                       "keep one");
 }
 
 TEST(MaterialDir, BrokenFiles) {
@@ -168,7 +247,7 @@ TEST(MaterialDir, BrokenFiles) {
     const std::string whole = readBytes(truncated / "normal.png");
     std::ofstream(truncated / "normal.png", std::ios::binary | std::ios::trunc)
         << whole.substr(0, whole.size() / 2);
-    expectOneLineError(truncated, "normal.png", "cannot decode image");
+    expectOneLineError(truncated, "normal.png", "truncated or damaged PNG data");
 
     const fs::path empty = writePlainSet(dir / "empty", m);
     std::ofstream(empty / "albedo.png", std::ios::trunc).close();
@@ -176,7 +255,7 @@ TEST(MaterialDir, BrokenFiles) {
 
     const fs::path text = writePlainSet(dir / "text", m);
     std::ofstream(text / "metallic.png", std::ios::trunc) << "metallic = 1.0\n";
-    expectOneLineError(text, "metallic.png", "cannot decode image");
+    expectOneLineError(text, "metallic.png", "not a PNG or JPEG image");
 }
 
 TEST(MaterialDir, BadFlagValuesAreUsageErrors) {

@@ -69,21 +69,78 @@ TEST(ModelFile, BrokenFilesFromAssimpsCorpus) {
     }
 }
 
+// Damaged copies of good files: each says what is wrong in words, never Assimp's "no suitable
+// reader", and never a decoder's code.
 TEST(ModelFile, DamagedCopies) {
     const fs::path dir = testOutputDir("model_damaged");
     const std::string glb = readBytes(kGltf / "BoxTextured-glTF-Binary/BoxTextured.glb");
+    const std::string gltf = readBytes(kGltf / "BoxTextured-glTF/BoxTextured.gltf");
     ASSERT_GT(glb.size(), 1000u);
+    ASSERT_GT(gltf.size(), 1000u);
     std::ofstream(dir / "truncated.glb", std::ios::binary) << glb.substr(0, glb.size() / 2);
+    std::ofstream(dir / "truncated.gltf", std::ios::binary) << gltf.substr(0, gltf.size() / 2);
+    std::string comma = gltf;
+    // BoxTextured.gltf opens with "{", then "    \"asset\"" on line 2: a comma at column 4 of line
+    // 2 stands before any member.
+    const size_t asset = comma.find("\"asset\"");
+    ASSERT_NE(asset, std::string::npos);
+    comma[asset - 1] = ',';  // the last of the four spaces
+    std::ofstream(dir / "comma.gltf", std::ios::binary) << comma;
     std::ofstream(dir / "empty.gltf").close();
     fs::copy_file(kGltf / "BoxTextured-glTF/CesiumLogoFlat.png", dir / "picture.gltf");
-    for (const char* file : {"truncated.glb", "empty.gltf", "picture.gltf"}) {
-        const Outcome o = run(dir / file, dir / (std::string(file) + ".png"));
+    fs::copy_file(kGltf / "BoxTextured-glTF/CesiumLogoFlat.png", dir / "picture.glb");
+    // The model is fine, its texture is cut short.
+    fs::create_directory(dir / "texture");
+    fs::copy_file(kGltf / "BoxTextured-glTF/BoxTextured.gltf", dir / "texture/BoxTextured.gltf");
+    fs::copy_file(kGltf / "BoxTextured-glTF/BoxTextured0.bin", dir / "texture/BoxTextured0.bin");
+    const std::string png = readBytes(kGltf / "BoxTextured-glTF/CesiumLogoFlat.png");
+    std::ofstream(dir / "texture/CesiumLogoFlat.png", std::ios::binary)
+        << png.substr(0, png.size() / 2);
+
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"truncated.glb", "truncated.glb: truncated: the GLB header says " +
+                              std::to_string(glb.size()) + " bytes, the file has " +
+                              std::to_string(glb.size() / 2)},
+        {"truncated.gltf", "truncated.gltf: truncated: the JSON ends inside"},
+        {"comma.gltf", "comma.gltf: invalid JSON at line 2, column 4: expected a name in quotes"},
+        {"empty.gltf", "empty.gltf: empty file"},
+        {"picture.gltf", "picture.gltf: invalid JSON at line 1, column 1"},
+        {"picture.glb", "picture.glb: not a binary glTF file (it does not start with 'glTF')"},
+        {"texture/BoxTextured.gltf", "CesiumLogoFlat.png: truncated or damaged PNG data"},
+        {"nowhere.gltf", "nowhere.gltf: no such file"},
+    };
+    for (const auto& [file, message] : cases) {
+        const Outcome o = run(dir / file, dir / (fs::path(file).filename().string() + ".png"));
         EXPECT_TRUE(o.refused) << file << " was drawn";
+        EXPECT_NE(o.render.run.err.find(message), std::string::npos)
+            << o.render.run.err << "(expected: " << message << ")";
+        EXPECT_EQ(o.render.run.err.find("No suitable reader"), std::string::npos);
     }
-    EXPECT_NE(run(dir / "empty.gltf", dir / "e.png").render.run.err.find("empty file"),
-              std::string::npos);
-    EXPECT_NE(run(dir / "nowhere.gltf", dir / "n.png").render.run.err.find("no such file"),
-              std::string::npos);
+}
+
+// Files whose primitives name no material are drawn in glTF's default material (white): visible
+// on 03's grey background, and said on stderr.
+TEST(ModelFile, NoMaterialIsVisibleAndSaid) {
+    const fs::path dir = testOutputDir("model_no_material");
+    int index = 0;
+    for (const char* file : {"IncorrectVertexArrays/Cube.gltf", "cameras/Cameras.gltf",
+                             "simple_skin/simple_skin.gltf"}) {
+        const fs::path output = dir / (std::to_string(index++) + ".png");
+        const Outcome o = run(kGltf / file, output);
+        ASSERT_FALSE(o.refused) << file << ": " << o.render.run.err;
+        EXPECT_NE(o.render.run.err.find("name no material; drawn in glTF's default material"),
+                  std::string::npos)
+            << file << ": " << o.render.run.err;
+        // Some pixels are the default material's white, far from the background.
+        const Image image = readImage(output, 3);
+        size_t white = 0;
+        for (size_t i = 0; i < image.pixels.size(); i += 3) {
+            if (image.pixels[i] > 240 && image.pixels[i + 1] > 240 && image.pixels[i + 2] > 240)
+                ++white;
+        }
+        EXPECT_GT(white, size_t(image.width * image.height) / 200) << file;
+        EXPECT_LT(image.at(0, 0, 0), 200) << file << ": the background is as light as the model";
+    }
 }
 
 }  // namespace

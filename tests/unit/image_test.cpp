@@ -101,7 +101,7 @@ TEST(Image, BadFilesNameThePathAndTheReason) {
 
     std::ofstream(dir / "text.png") << "this is not a picture\n";
     const std::string text = messageOf(dir / "text.png");
-    EXPECT_NE(text.find("text.png: cannot decode image"), std::string::npos) << text;
+    EXPECT_NE(text.find("text.png: not a PNG or JPEG image"), std::string::npos) << text;
 
     // A PNG cut in half.
     Image image = solid(64, 64, 1, 2, 3);
@@ -111,7 +111,18 @@ TEST(Image, BadFilesNameThePathAndTheReason) {
     std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::ofstream(dir / "half.png", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
     const std::string half = messageOf(dir / "half.png");
-    EXPECT_NE(half.find("half.png: cannot decode image"), std::string::npos) << half;
+    EXPECT_NE(half.find("half.png: truncated or damaged PNG data"), std::string::npos) << half;
+
+    // A JPEG cut short, and a PNG whose compressed data is damaged: words, not decoder codes.
+    std::string damaged = bytes;
+    for (size_t i = 60; i < 90; ++i) damaged[i] = char(0xff);
+    std::ofstream(dir / "damaged.png", std::ios::binary) << damaged;
+    const std::string bad = messageOf(dir / "damaged.png");
+    EXPECT_NE(bad.find("damaged.png: truncated or damaged PNG data"), std::string::npos) << bad;
+    std::ofstream(dir / "cut.jpg", std::ios::binary)
+        << std::string("\xff\xd8\xff\xe0\x00\x10JFIF", 10);
+    const std::string jpeg = messageOf(dir / "cut.jpg");
+    EXPECT_NE(jpeg.find("cut.jpg: truncated or damaged JPEG data"), std::string::npos) << jpeg;
 }
 
 }  // namespace
