@@ -100,13 +100,7 @@ std::string encodePng(const Image& image) {
 }
 
 void writePng(const fs::path& path, const Image& image) {
-    std::string bytes;
-    try {
-        bytes = encodePng(image);
-    } catch (const Error& e) {
-        throw Error(displayPath(path) + ": " + e.what());
-    }
-    writeFileAtomically(path, bytes);
+    writeFileAtomically(path, [&] { return encodePng(image); });
 }
 
 namespace {
@@ -227,16 +221,18 @@ HdrImage readHdr(const fs::path& path) {
 }
 
 void writeHdr(const fs::path& path, const HdrImage& image) {
-    if (image.width <= 0 || image.height <= 0 ||
-        image.pixels.size() != size_t(image.width) * size_t(image.height) * 3) {
-        throw Error(displayPath(path) + ": cannot write an empty or malformed HDR image");
-    }
-    std::string bytes;
-    if (!stbi_write_hdr_to_func(appendBytes, &bytes, image.width, image.height, 3,
-                                image.pixels.data())) {
-        throw Error(displayPath(path) + ": HDR encoding failed");
-    }
-    writeFileAtomically(path, bytes);
+    writeFileAtomically(path, [&] {
+        if (image.width <= 0 || image.height <= 0 ||
+            image.pixels.size() != size_t(image.width) * size_t(image.height) * 3) {
+            throw Error("cannot write an empty or malformed HDR image");
+        }
+        std::string bytes;
+        if (!stbi_write_hdr_to_func(appendBytes, &bytes, image.width, image.height, 3,
+                                    image.pixels.data())) {
+            throw Error("HDR encoding failed");
+        }
+        return bytes;
+    });
 }
 
 Image flipRows(const Image& image) {

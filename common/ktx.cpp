@@ -123,13 +123,7 @@ std::string encodeKtx(const KtxImage& image) {
 }
 
 void writeKtx(const fs::path& path, const KtxImage& image) {
-    std::string bytes;
-    try {
-        bytes = encodeKtx(image);
-    } catch (const Error& e) {
-        throw Error(displayPath(path) + ": " + e.what());
-    }
-    writeFileAtomically(path, bytes);
+    writeFileAtomically(path, [&] { return encodeKtx(image); });
 }
 
 KtxImage readKtx(const fs::path& path) {

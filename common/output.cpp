@@ -172,4 +172,14 @@ void writeFileAtomically(const fs::path& path, std::string_view bytes) {
     batch.commit();
 }
 
+void writeFileAtomically(const fs::path& path, const std::function<std::string()>& encode) {
+    std::string bytes;
+    try {
+        bytes = encode();
+    } catch (const Error& e) {
+        throw Error(displayPath(path) + ": " + e.what());
+    }
+    writeFileAtomically(path, bytes);
+}
+
 }  // namespace pbr

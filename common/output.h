@@ -5,6 +5,7 @@
 // and the reason, and leaves nothing behind. Several files can be written as one batch: none of
 // them appears unless every one of them could be written.
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,6 +17,10 @@ namespace pbr {
 // is written directly, with every error checked, since it cannot be replaced by a rename.
 // Throws Error("<path>: <reason>").
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes);
+// The same for the bytes `encode` returns (a PNG, a KTX file); an Error it throws gets the path
+// in front, so that every failure names the file.
+void writeFileAtomically(const std::filesystem::path& path,
+                         const std::function<std::string()>& encode);
 
 // Files that appear together or not at all: each is written to its temporary first, then all are
 // renamed. Nothing touches the destinations before commit().

@@ -14,14 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Every name in `dir`, hidden temporaries included, sorted.
-std::vector<std::string> entries(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
-    std::sort(names.begin(), names.end());
-    return names;
-}
-
 // A failed run: exit 1, stderr exactly one line, which holds every piece of `expected`; no
 // "wrote" line on stdout.
 void expectOneLineFailure(const RunResult& run, const std::vector<std::string>& expected) {
@@ -50,7 +42,7 @@ TEST(Output, NearlyFullDiskLeavesNothing) {
         {"01_lighting", "--headless", "--size", "320x180", "--output", (dir / "grid.png").string()},
         {.fileSizeLimit = 8192});
     expectOneLineFailure(run, {"grid.png: cannot write: File too large"});
-    EXPECT_EQ(entries(dir), std::vector<std::string>{"grid.png"});
+    EXPECT_EQ(folderEntries(dir), std::vector<std::string>{"grid.png"});
     EXPECT_EQ(readBytes(dir / "grid.png"), "an older picture");
 }
 
@@ -74,7 +66,7 @@ TEST(Output, MissingFolderIsAnErrorForEveryOutputFlag) {
                          {"error: --ktx-dir new: no such folder"});
     expectOneLineFailure(runSample({"06_brdf_lut", "--headless", "--output", "new/lut.png"}, here),
                          {"error: new/lut.png: no such folder 'new'"});
-    EXPECT_TRUE(entries(dir).empty());
+    EXPECT_TRUE(folderEntries(dir).empty());
 }
 
 // 06 writes its picture and its KTX files as one batch. Each failure below used to leave some of
@@ -92,7 +84,7 @@ TEST(Output, BrdfLutToolWritesAllOrNothing) {
     fs::create_directory(dir / "taken");
     expectOneLineFailure(runSample(with({"--output", (dir / "taken").string()})),
                          {"taken: is a directory"});
-    EXPECT_EQ(entries(dir), std::vector<std::string>{"taken"});
+    EXPECT_EQ(folderEntries(dir), std::vector<std::string>{"taken"});
 
     // The picture cannot be written (/dev/full): the maps, written first to temporaries, are
     // withdrawn.
@@ -100,7 +92,7 @@ TEST(Output, BrdfLutToolWritesAllOrNothing) {
     expectOneLineFailure(
         runSample(with({"--output", "/dev/full", "--ktx-dir", (dir / "maps").string()})),
         {"/dev/full: cannot write: No space left on device"});
-    EXPECT_TRUE(entries(dir / "maps").empty());
+    EXPECT_TRUE(folderEntries(dir / "maps").empty());
 
     // The disk fills up while the maps are written: none of them, and no picture. (--no-cache:
     // the cache could not store the LUT either, and would say so in a line of its own.)
@@ -108,7 +100,7 @@ TEST(Output, BrdfLutToolWritesAllOrNothing) {
         runSample(with({"--output", (dir / "maps" / "lut.png").string(), "--no-cache"}),
                   {.fileSizeLimit = 100000}),
         {"brdf_lut_sheen_256.ktx: cannot write: File too large"});
-    EXPECT_TRUE(entries(dir / "maps").empty());
+    EXPECT_TRUE(folderEntries(dir / "maps").empty());
 
     // A broken shader of 06's own: no file at all.
     const fs::path shaders = dir / "shaders";
@@ -117,12 +109,12 @@ TEST(Output, BrdfLutToolWritesAllOrNothing) {
     const RunResult broken = runSample(with({"--output", (dir / "maps" / "lut.png").string()}),
                                        {.setEnv = {{"PBR_SHADER_DIR", shaders.string()}}});
     expectOneLineFailure(broken, {"show_lut.frag"});
-    EXPECT_TRUE(entries(dir / "maps").empty());
+    EXPECT_TRUE(folderEntries(dir / "maps").empty());
 
     // And when everything works, all of it, each file named on stdout.
     const RunResult good = runSample(with({"--output", (dir / "maps" / "lut.png").string()}));
     ASSERT_EQ(good.exitCode, 0) << good.err;
-    EXPECT_EQ(entries(dir / "maps"),
+    EXPECT_EQ(folderEntries(dir / "maps"),
               (std::vector<std::string>{"brdf_lut_sheen_256.ktx", "lut.png"}));
     EXPECT_NE(good.out.find("wrote " + (dir / "maps" / "brdf_lut_sheen_256.ktx").string()),
               std::string::npos)
@@ -144,7 +136,7 @@ TEST(Output, CacheOnANearlyFullDiskHoldsOnlyWholeFiles) {
               std::string::npos)
         << run.err;
     EXPECT_TRUE(fs::exists(dir / "04.png"));
-    const std::vector<std::string> cached = entries(cache);
+    const std::vector<std::string> cached = folderEntries(cache);
     EXPECT_EQ(cached, std::vector<std::string>{"sunny_courtyard.irradiance.ktx"});
     for (const std::string& name : cached) EXPECT_NO_THROW(readKtx(cache / name)) << name;
 }

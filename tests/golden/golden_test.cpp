@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <set>
+#include <tuple>
 
 #include "context.h"
 #include "paths.h"
@@ -39,116 +41,97 @@ void expectNotBlank(const Image& image, double minShare) {
     EXPECT_GT(double(differing) / (double(image.width) * image.height), minShare);
 }
 
-// Each golden is checked on every offscreen backend this build has: they must draw the same.
-class GoldenOnBackend : public ::testing::TestWithParam<std::string> {
-protected:
-    // `tag` keeps the folders of two tests of one sample apart (ctest runs them in parallel).
-    SampleRender render(const std::string& sample, std::vector<std::string> args = {},
-                        const std::string& tag = "") {
-        const fs::path dir = testOutputDir("golden_" + sample + tag + "_" + GetParam());
-        args.insert(args.end(), {"--backend", GetParam()});
-        return renderSample(sample, dir / (sample + ".png"), args);
-    }
-    // For a second golden of one sample: the render renamed to <name>.png, then compared with
-    // tests/golden/<name>.png.
-    static ::testing::AssertionResult matchesGoldenAs(const std::string& name,
-                                                      const SampleRender& rendered) {
-        const fs::path kept = rendered.image.parent_path() / (name + ".png");
-        fs::rename(rendered.image, kept);
-        return matchesGolden(name, {rendered.run, kept, rendered.backend, rendered.renderer});
-    }
+// Every golden image, one case each: the golden's name (tests/golden/<golden>.png), the sample
+// and its arguments, how much of the picture must differ from its clear colour, and, for one
+// golden drawn from several inputs, the other inputs that must give the very same bytes. The
+// test of a case is named after its golden (MatchesGolden/<golden>_<backend>), so that a check
+// can tell which tests rewrite which goldens (see tests/docs/check_docs.py).
+struct GoldenCase {
+    std::string golden;
+    std::string sample;
+    std::vector<std::string> args{};
+    double minNonBlank = 0.0;
+    std::vector<std::vector<std::string>> sameBytesAs{};
 };
 
-TEST_P(GoldenOnBackend, Lighting01MatchesGolden) {
-    const SampleRender rendered = render("01_lighting");
-    expectCleanRun(rendered);
-    EXPECT_EQ(rendered.backend.rfind(GetParam(), 0), 0u) << rendered.backend;
-    const Image image = readImage(rendered.image, 3);
-    EXPECT_EQ(image.width, 1280);
-    EXPECT_EQ(image.height, 720);
-    expectNotBlank(image, 0.15);  // 49 spheres cover about a quarter of the frame
-    EXPECT_TRUE(matchesGolden("01_lighting", rendered));
-}
+const fs::path kAssimpGltf = "/usr/share/assimp/models/glTF2";
 
-TEST_P(GoldenOnBackend, LightingTextured02MatchesGolden) {
-    const SampleRender rendered = render("02_lighting_textured");
-    expectCleanRun(rendered);
-    expectNotBlank(readImage(rendered.image, 3), 0.1);  // dark iron lies close to the background
-    EXPECT_TRUE(matchesGolden("02_lighting_textured", rendered));
-}
-
-// The other four material sets, each on the tutorial's close-up view, at a small size.
-TEST_P(GoldenOnBackend, MaterialSetsMatchGoldens) {
+std::vector<GoldenCase> goldenCases() {
+    std::vector<GoldenCase> cases = {
+        {"01_lighting", "01_lighting", {}, 0.15},  // 49 spheres cover about a quarter
+        {"02_lighting_textured", "02_lighting_textured", {}, 0.1},  // dark iron near the background
+        {"03_gltf_unlit", "03_gltf_unlit", {}, 0.05},
+        // BoxTextured as .gltf with a .bin and a .png beside it, as .glb, and with everything
+        // embedded in base64: one picture, one golden.
+        {"03_box_textured",
+         "03_gltf_unlit",
+         {"--model", (kAssimpGltf / "BoxTextured-glTF/BoxTextured.gltf").string(), "--size",
+          "480x270"},
+         0.1,
+         {{"--model", (kAssimpGltf / "BoxTextured-glTF-Binary/BoxTextured.glb").string(), "--size",
+           "480x270"},
+          {"--model", (kAssimpGltf / "BoxTextured-glTF-Embedded/BoxTextured.gltf").string(),
+           "--size", "480x270"}}},
+        {"04_ibl_irradiance", "04_ibl_irradiance"},
+        {"05_ibl_specular", "05_ibl_specular"},
+        {"05_ibl_specular_textured", "05_ibl_specular", {"--textured"}},
+        {"06_brdf_lut", "06_brdf_lut", {}, 0.3},
+    };
+    // The other four material sets, each on the tutorial's close-up view, at a small size.
     for (const char* set : {"gold", "grass", "plastic", "wall"}) {
-        const SampleRender rendered = render("02_lighting_textured",
-                                             {"--material-dir", (materialDir() / set).string(),
-                                              "--size", "480x270", "--camera", "0,0,3"},
-                                             "_sets");
+        cases.push_back({std::string("02_") + set,
+                         "02_lighting_textured",
+                         {"--material-dir", (materialDir() / set).string(), "--size", "480x270",
+                          "--camera", "0,0,3"},
+                         0.3});
+    }
+    return cases;
+}
+
+// Each golden is checked on every offscreen backend this build has: they must draw the same.
+class GoldenImage : public ::testing::TestWithParam<std::tuple<GoldenCase, std::string>> {};
+
+TEST_P(GoldenImage, MatchesGolden) {
+    const auto& [golden, backend] = GetParam();
+    const fs::path dir = testOutputDir("golden_" + golden.golden + "_" + backend);
+    auto render = [&](std::vector<std::string> args, const std::string& file) {
+        args.insert(args.end(), {"--backend", backend});
+        const SampleRender rendered = renderSample(golden.sample, dir / file, args);
         expectCleanRun(rendered);
-        expectNotBlank(readImage(rendered.image, 3), 0.3);
-        EXPECT_TRUE(matchesGoldenAs(std::string("02_") + set, rendered));
+        EXPECT_EQ(rendered.backend.rfind(backend, 0), 0u) << rendered.backend;
+        return rendered;
+    };
+    const SampleRender rendered = render(golden.args, golden.golden + ".png");
+    if (golden.minNonBlank > 0.0) expectNotBlank(readImage(rendered.image, 3), golden.minNonBlank);
+    EXPECT_TRUE(matchesGolden(golden.golden, rendered));
+    const std::string bytes = readBytes(rendered.image);
+    for (size_t i = 0; i < golden.sameBytesAs.size(); ++i) {
+        const SampleRender other =
+            render(golden.sameBytesAs[i], "same" + std::to_string(i) + ".png");
+        EXPECT_TRUE(readBytes(other.image) == bytes)
+            << golden.sameBytesAs[i][1] << " draws differently from " << golden.args[1];
     }
 }
 
-TEST_P(GoldenOnBackend, GltfUnlit03MatchesGolden) {
-    const SampleRender rendered = render("03_gltf_unlit");
-    expectCleanRun(rendered);
-    expectNotBlank(readImage(rendered.image, 3), 0.05);
-    EXPECT_TRUE(matchesGolden("03_gltf_unlit", rendered));
-}
+INSTANTIATE_TEST_SUITE_P(Backends, GoldenImage,
+                         ::testing::Combine(::testing::ValuesIn(goldenCases()),
+                                            ::testing::ValuesIn(offscreenBackends())),
+                         [](const auto& info) {
+                             return std::get<0>(info.param).golden + "_" + std::get<1>(info.param);
+                         });
 
-// BoxTextured as .gltf with a .bin and a .png beside it, as .glb, and as .gltf with everything
-// embedded in base64: one picture, one golden.
-TEST_P(GoldenOnBackend, BoxTexturedInEveryFormMatchesOneGolden) {
-    const fs::path models = "/usr/share/assimp/models/glTF2";
-    std::string first;
-    for (const char* file :
-         {"BoxTextured-glTF/BoxTextured.gltf", "BoxTextured-glTF-Binary/BoxTextured.glb",
-          "BoxTextured-glTF-Embedded/BoxTextured.gltf"}) {
-        const SampleRender rendered =
-            render("03_gltf_unlit", {"--model", (models / file).string(), "--size", "480x270"});
-        expectCleanRun(rendered);
-        const std::string bytes = readBytes(rendered.image);
-        if (first.empty()) {
-            first = bytes;
-            expectNotBlank(readImage(rendered.image, 3), 0.1);
-            const fs::path kept = rendered.image.parent_path() / "03_box_textured.png";
-            fs::copy_file(rendered.image, kept, fs::copy_options::overwrite_existing);
-            EXPECT_TRUE(matchesGolden("03_box_textured",
-                                      {rendered.run, kept, rendered.backend, rendered.renderer}));
-        } else {
-            EXPECT_TRUE(bytes == first) << file << " draws differently from BoxTextured.gltf";
-        }
+// The table and the folder agree: every golden picture (with its .json) has a case, and every
+// case has its picture. A golden without a case would never be checked or rewritten.
+TEST(Golden, EveryGoldenFileHasACase) {
+    std::set<std::string> files, cases, metadata;
+    for (const auto& entry : fs::directory_iterator(PBR_GOLDEN_DIR)) {
+        if (entry.path().extension() == ".png") files.insert(entry.path().stem().string());
+        if (entry.path().extension() == ".json") metadata.insert(entry.path().stem().string());
     }
+    for (const GoldenCase& golden : goldenCases()) cases.insert(golden.golden);
+    EXPECT_EQ(files, cases);
+    EXPECT_EQ(metadata, cases);
 }
-
-TEST_P(GoldenOnBackend, IblIrradiance04MatchesGolden) {
-    const SampleRender rendered = render("04_ibl_irradiance");
-    expectCleanRun(rendered);
-    EXPECT_TRUE(matchesGolden("04_ibl_irradiance", rendered));
-}
-
-TEST_P(GoldenOnBackend, IblSpecular05MatchesGolden) {
-    const SampleRender rendered = render("05_ibl_specular");
-    expectCleanRun(rendered);
-    EXPECT_TRUE(matchesGolden("05_ibl_specular", rendered));
-}
-
-TEST_P(GoldenOnBackend, IblSpecular05TexturedMatchesGolden) {
-    const SampleRender rendered = render("05_ibl_specular", {"--textured"}, "_textured");
-    expectCleanRun(rendered);
-    EXPECT_TRUE(matchesGoldenAs("05_ibl_specular_textured", rendered));
-}
-
-TEST_P(GoldenOnBackend, BrdfLut06MatchesGolden) {
-    const SampleRender rendered = render("06_brdf_lut");
-    expectCleanRun(rendered);
-    expectNotBlank(readImage(rendered.image, 3), 0.3);
-    EXPECT_TRUE(matchesGolden("06_brdf_lut", rendered));
-}
-
-INSTANTIATE_TEST_SUITE_P(Backends, GoldenOnBackend, ::testing::ValuesIn(offscreenBackends()),
-                         [](const auto& info) { return info.param; });
 
 // On one machine the backends give the same pixels, bit for bit (both are llvmpipe here).
 TEST(Golden, BackendsGiveTheSamePixels) {

@@ -30,6 +30,9 @@ RunResult runSample(std::vector<std::string> argv, const RunOptions& options = {
 // A fresh, empty folder under the build's test-output/ for one test.
 std::filesystem::path testOutputDir(const std::string& name);
 
+// The names in a folder, hidden files included, sorted.
+std::vector<std::string> folderEntries(const std::filesystem::path& dir);
+
 // A file's bytes ("" when it cannot be read).
 std::string readBytes(const std::filesystem::path& path);
 

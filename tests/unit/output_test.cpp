@@ -14,16 +14,9 @@ namespace pbr {
 namespace {
 
 namespace fs = std::filesystem;
+using test::folderEntries;
 using test::readBytes;
 using test::testOutputDir;
-
-// The names in `dir`, hidden temporaries included.
-std::vector<std::string> entries(const fs::path& dir) {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());
-    std::sort(names.begin(), names.end());
-    return names;
-}
 
 std::string errorOf(const std::function<void()>& write) {
     try {
@@ -39,7 +32,7 @@ TEST(Output, WritesAndReplacesWhole) {
     writeFileAtomically(dir / "a.txt", "first");
     writeFileAtomically(dir / "a.txt", "second, longer");
     EXPECT_EQ(readBytes(dir / "a.txt"), "second, longer");
-    EXPECT_EQ(entries(dir), std::vector<std::string>{"a.txt"});  // no temporary left
+    EXPECT_EQ(folderEntries(dir), std::vector<std::string>{"a.txt"});  // no temporary left
 }
 
 TEST(Output, MissingFolderIsNamedAndNothingIsCreated) {
@@ -47,7 +40,7 @@ TEST(Output, MissingFolderIsNamedAndNothingIsCreated) {
     const std::string error =
         errorOf([&] { writeFileAtomically(dir / "nowhere" / "a.txt", "bytes"); });
     EXPECT_NE(error.find("a.txt: no such folder"), std::string::npos) << error;
-    EXPECT_TRUE(entries(dir).empty());
+    EXPECT_TRUE(folderEntries(dir).empty());
 }
 
 TEST(Output, AFolderInTheWayIsNamed) {
@@ -55,7 +48,7 @@ TEST(Output, AFolderInTheWayIsNamed) {
     fs::create_directory(dir / "taken");
     const std::string error = errorOf([&] { writeFileAtomically(dir / "taken", "bytes"); });
     EXPECT_NE(error.find("taken: is a directory"), std::string::npos) << error;
-    EXPECT_EQ(entries(dir), std::vector<std::string>{"taken"});
+    EXPECT_EQ(folderEntries(dir), std::vector<std::string>{"taken"});
 }
 
 // /dev/full refuses every byte: the error says so, and no temporary appears anywhere.
@@ -80,7 +73,7 @@ TEST(Output, ABatchIsAllOrNothing) {
         EXPECT_NE(error.find("three.txt: no such folder"), std::string::npos) << error;
     }
     EXPECT_EQ(readBytes(dir / "one.txt"), "old");
-    EXPECT_EQ(entries(dir), std::vector<std::string>{"one.txt"});
+    EXPECT_EQ(folderEntries(dir), std::vector<std::string>{"one.txt"});
 
     OutputBatch batch;
     batch.add(dir / "one.txt", "new");
@@ -88,7 +81,7 @@ TEST(Output, ABatchIsAllOrNothing) {
     batch.add("/dev/full", "new");  // devices are written after every temporary
     EXPECT_NE(errorOf([&] { batch.commit(); }).find("No space left"), std::string::npos);
     EXPECT_EQ(readBytes(dir / "one.txt"), "old");
-    EXPECT_EQ(entries(dir), std::vector<std::string>{"one.txt"});
+    EXPECT_EQ(folderEntries(dir), std::vector<std::string>{"one.txt"});
 }
 
 TEST(Output, ALinkStaysALink) {
