@@ -75,6 +75,7 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (!context_)
         context_ = createOffscreenContext(options_.backend, options_.width, options_.height);
     startSeconds_ = context_->seconds();
+    forgetCurrentProgram();  // a new context: no program of ours is current in it
 
     installDebugOutput();
     // Cube maps filter across face edges (GL 3.2 core): every IBL map relies on it, whether it
@@ -82,8 +83,8 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     const glm::ivec2 size = context_->windowed() ? context_->framebufferSize()
                                                  : glm::ivec2(options_.width, options_.height);
-    target_ =
-        std::make_unique<RenderTarget>(std::max(size.x, 1), std::max(size.y, 1), options_.msaa);
+    target_ = std::make_unique<RenderTarget>(std::max(size.x, 1), std::max(size.y, 1),
+                                             options_.msaa, config_.srgbTarget);
 
     if (options_.camera) {
         const CameraStart& start = *options_.camera;
@@ -111,7 +112,7 @@ App::~App() {
     // Everything a sample made was declared after the App and is gone by now: whatever GL still
     // knows of is a leak. (Skipped while unwinding from an error: that run already failed.)
     if (context_ && !std::uncaught_exceptions()) {
-        glUseProgram(0);  // a deleted program stays alive while it is current
+        useProgram(0);  // a deleted program stays alive while it is current
         const GlObjectCensus census = takeGlObjectCensus();
         if (census.total() > 0) {
             std::fprintf(stderr, "%s: error: GL objects leaked: %s\n", config_.name.c_str(),
@@ -215,7 +216,8 @@ bool App::nextFrame() {
         const glm::ivec2 size = context_->framebufferSize();
         if (size.x > 0 && size.y > 0 &&
             (size.x != target_->width() || size.y != target_->height())) {
-            target_ = std::make_unique<RenderTarget>(size.x, size.y, options_.msaa);
+            target_ =
+                std::make_unique<RenderTarget>(size.x, size.y, options_.msaa, config_.srgbTarget);
         }
     }
     frameStart_ = context_->seconds();

@@ -35,6 +35,9 @@ struct AppConfig {
     float cameraYaw = FlyCamera::kDefaultYaw;
     float cameraPitch = FlyCamera::kDefaultPitch;
     std::vector<FlagSpec> flags{};  // the sample's own flags
+    // The render target stores sRGB and the GL encodes (see framebuffer.h): the sample's shaders
+    // write linear values and blending happens in linear light.
+    bool srgbTarget = false;
 };
 
 class App {

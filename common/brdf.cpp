@@ -90,7 +90,7 @@ glm::dvec2 integrateBrdf(double NdotV, double roughness, int samples) {
     for (int i = 0; i < samples; ++i) {
         const glm::dvec2 Xi = hammersley(i, samples);
         const double cosTheta = std::sqrt((1.0 - Xi.y) / (1.0 + (a * a - 1.0) * Xi.y));
-        const glm::dvec3 H = fromSpherical(cosTheta, 2.0 * M_PI * Xi.x);
+        const glm::dvec3 H = fromSpherical(cosTheta, 2.0 * std::numbers::pi * Xi.x);
         const glm::dvec3 L = glm::normalize(2.0 * glm::dot(V, H) * H - V);
         const double NdotL = std::max(L.z, 0.0), NdotH = std::max(H.z, 0.0);
         const double VdotH = std::max(glm::dot(V, H), 0.0);
@@ -111,16 +111,17 @@ double integrateSheen(double NdotV, double roughness, int samples) {
     for (int i = 0; i < samples; ++i) {
         const glm::dvec2 Xi = hammersley(i, samples);
         const double sinTheta = std::pow(Xi.y, alpha / (2.0 * alpha + 1.0));
-        const glm::dvec3 H =
-            fromSpherical(std::sqrt(std::max(0.0, 1.0 - sinTheta * sinTheta)), 2.0 * M_PI * Xi.x);
+        const glm::dvec3 H = fromSpherical(std::sqrt(std::max(0.0, 1.0 - sinTheta * sinTheta)),
+                                           2.0 * std::numbers::pi * Xi.x);
         const glm::dvec3 L = 2.0 * glm::dot(V, H) * H - V;
         const double NdotL = std::max(L.z, 0.0), NdotH = std::max(H.z, 0.0);
         const double VdotH = std::max(glm::dot(V, H), 0.0);
         if (NdotL <= 0.0) continue;
         const double visibility =
             std::clamp(1.0 / (4.0 * (NdotL + NdotV - NdotL * NdotV)), 0.0, 1.0);  // Ashikhmin
-        const double charlie =
-            (2.0 + invR) * std::pow(std::max(1.0 - NdotH * NdotH, 0.0), invR * 0.5) / (2.0 * M_PI);
+        const double charlie = (2.0 + invR) *
+                               std::pow(std::max(1.0 - NdotH * NdotH, 0.0), invR * 0.5) /
+                               (2.0 * std::numbers::pi);
         sum += visibility * charlie * NdotL * VdotH;
     }
     return sum / double(samples);

@@ -23,9 +23,10 @@ std::string statusName(GLenum status) {
 }
 
 void attachStorage(GLuint framebuffer, GLuint color, GLuint depth, int samples, int width,
-                   int height) {
+                   int height, bool srgb) {
     glBindRenderbuffer(GL_RENDERBUFFER, color);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8,
+                                     width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, depth);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, width, height);
     glBindRenderbuffer(GL_RENDERBUFFER, 0);
@@ -42,19 +43,19 @@ void requireCompleteFramebuffer(const char* what) {
     }
 }
 
-RenderTarget::RenderTarget(int width, int height, int samples)
-    : width_(width), height_(height), samples_(samples) {
+RenderTarget::RenderTarget(int width, int height, int samples, bool srgb)
+    : width_(width), height_(height), samples_(samples), srgb_(srgb) {
     GLint maxSamples = 0;
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
     if (samples > maxSamples) {
         throw Error("--msaa " + std::to_string(samples) + ": this GL allows at most " +
                     std::to_string(maxSamples) + " samples");
     }
-    attachStorage(resolved_.id(), resolvedColor_.id(), resolvedDepth_.id(), 0, width, height);
+    attachStorage(resolved_.id(), resolvedColor_.id(), resolvedDepth_.id(), 0, width, height, srgb);
     requireCompleteFramebuffer("render target");
     if (samples_ > 0) {
         attachStorage(multisampled_.id(), multisampledColor_.id(), multisampledDepth_.id(), samples,
-                      width, height);
+                      width, height, srgb);
         requireCompleteFramebuffer("multisampled render target");
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -63,9 +64,11 @@ RenderTarget::RenderTarget(int width, int height, int samples)
 void RenderTarget::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 0 ? multisampled_.id() : resolved_.id());
     glViewport(0, 0, width_, height_);
+    (srgb_ ? glEnable : glDisable)(GL_FRAMEBUFFER_SRGB);
 }
 
 void RenderTarget::resolve() const {
+    glDisable(GL_FRAMEBUFFER_SRGB);  // the stored bytes, as they are
     if (samples_ == 0) return;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_.id());
@@ -74,6 +77,7 @@ void RenderTarget::resolve() const {
 }
 
 void RenderTarget::blitToDefault(int width, int height) const {
+    glDisable(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -82,6 +86,7 @@ void RenderTarget::blitToDefault(int width, int height) const {
 Image RenderTarget::readPixels() const {
     Image image{width_, height_, 3, {}};
     image.pixels.resize(size_t(width_) * size_t(height_) * 3);
+    glDisable(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, image.pixels.data());

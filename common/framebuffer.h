@@ -2,6 +2,12 @@
 // The framebuffer every frame is drawn into, windowed or headless: a multisampled one when MSAA
 // is on (resolved by a blit), and a single-sample RGBA8 one that is read back or shown. Both
 // paths resolve the same way, so a window's F12 screenshot matches a headless render.
+//
+// Most samples encode sRGB in their shaders, as the texts do, into plain RGBA8. A target made with
+// `srgb` stores sRGB8_ALPHA8 instead and draws with GL_FRAMEBUFFER_SRGB on: the shader writes
+// linear values, and the GL encodes them and blends in linear light (03's BLEND materials). The
+// resolve, the read-back and the blit run with the conversion off, so the stored bytes travel as
+// they are, the same way as for every other sample.
 #include "gl.h"
 #include "image.h"
 
@@ -10,7 +16,7 @@ namespace pbr {
 class RenderTarget {
 public:
     // samples 0: no multisampling. Throws Error naming the status when incomplete.
-    RenderTarget(int width, int height, int samples);
+    RenderTarget(int width, int height, int samples, bool srgb = false);
 
     void bind() const;     // the framebuffer to draw into, with the viewport set
     void resolve() const;  // multisampled -> single-sample (no-op without MSAA)
@@ -20,9 +26,11 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     int samples() const { return samples_; }
+    bool srgb() const { return srgb_; }
 
 private:
     int width_, height_, samples_;
+    bool srgb_;
     GlFramebuffer resolved_;
     GlRenderbuffer resolvedColor_, resolvedDepth_;
     GlFramebuffer multisampled_;

@@ -37,14 +37,63 @@ std::string GlObjectCensus::describe() const {
 
 namespace detail {
 
+GLuint& currentProgram() {
+    static GLuint current = 0;
+    return current;
+}
+
 GLuint ProgramKind::create() {
     return glCreateProgram();
 }
 void ProgramKind::destroy(GLuint id) {
+    // A deleted program lives on while it is current: make it not current, so that it goes.
+    if (id == currentProgram()) useProgram(0);
     glDeleteProgram(id);
 }
 
 }  // namespace detail
+
+void useProgram(GLuint program) {
+    if (program == detail::currentProgram()) return;
+    glUseProgram(program);
+    detail::currentProgram() = program;
+}
+
+void forgetCurrentProgram() {
+    detail::currentProgram() = 0;
+    glUseProgram(0);
+}
+
+SavedGlState::SavedGlState() {
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &drawFramebuffer_);
+    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer_);
+    glGetIntegerv(GL_VIEWPORT, viewport_);
+    glGetIntegerv(GL_DEPTH_FUNC, &depthFunc_);
+    glGetIntegerv(GL_CURRENT_PROGRAM, &program_);
+    glGetIntegerv(GL_ACTIVE_TEXTURE, &activeTexture_);
+    glActiveTexture(GL_TEXTURE0);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &texture2D_);
+    glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &textureCube_);
+    glActiveTexture(GLenum(activeTexture_));
+    depthTest_ = glIsEnabled(GL_DEPTH_TEST);
+    cullFace_ = glIsEnabled(GL_CULL_FACE);
+    blend_ = glIsEnabled(GL_BLEND);
+}
+
+SavedGlState::~SavedGlState() {
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(drawFramebuffer_));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(readFramebuffer_));
+    glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    glDepthFunc(GLenum(depthFunc_));
+    (depthTest_ ? glEnable : glDisable)(GL_DEPTH_TEST);
+    (cullFace_ ? glEnable : glDisable)(GL_CULL_FACE);
+    (blend_ ? glEnable : glDisable)(GL_BLEND);
+    useProgram(GLuint(program_));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, GLuint(texture2D_));
+    glBindTexture(GL_TEXTURE_CUBE_MAP, GLuint(textureCube_));
+    glActiveTexture(GLenum(activeTexture_));
+}
 
 std::string glErrorName(GLenum error) {
     switch (error) {

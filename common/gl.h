@@ -39,6 +39,7 @@ struct ProgramKind {
     static GLuint create();
     static void destroy(GLuint id);
 };
+GLuint& currentProgram();  // what useProgram() last made current
 }  // namespace detail
 
 // Owns one GL object name; created on construction, deleted on destruction, moved, never copied.
@@ -79,5 +80,28 @@ using GlProgram = GlObject<detail::ProgramKind>;
 
 // "GL_INVALID_OPERATION" for 0x0502, and so on.
 std::string glErrorName(GLenum error);
+
+// Makes `program` the current one, skipping the call when it already is (a uniform upload binds
+// its program every time). Every glUseProgram of the suite goes through here, so the record of the
+// current program is right; a new context starts with forgetCurrentProgram().
+void useProgram(GLuint program);
+void forgetCurrentProgram();
+
+// Saves the GL state a pass changes and restores it when it goes out of scope: the draw and read
+// framebuffers, the viewport, depth test and depth function, face culling, blending, the program,
+// the active texture unit and unit 0's 2D and cube-map bindings. The IBL precomputation and the
+// skybox leave the caller's state as they found it.
+class SavedGlState {
+public:
+    SavedGlState();
+    ~SavedGlState();
+    SavedGlState(const SavedGlState&) = delete;
+    SavedGlState& operator=(const SavedGlState&) = delete;
+
+private:
+    GLint drawFramebuffer_ = 0, readFramebuffer_ = 0, viewport_[4] = {}, depthFunc_ = 0,
+          program_ = 0, activeTexture_ = 0, texture2D_ = 0, textureCube_ = 0;
+    GLboolean depthTest_ = GL_FALSE, cullFace_ = GL_FALSE, blend_ = GL_FALSE;
+};
 
 }  // namespace pbr

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -25,13 +26,15 @@ std::array<glm::mat4, 6> captureViews() {
 void readFrom(Shader& shader, const TextureCube& environment) {
     shader.set("environmentMap", 0);
     shader.set("sourceTexelSolidAngle",
-               float(4.0 * M_PI / (6.0 * double(environment.size()) * double(environment.size()))));
+               float(4.0 * std::numbers::pi /
+                     (6.0 * double(environment.size()) * double(environment.size()))));
     environment.bind(0);
 }
 
 }  // namespace
 
 void renderCubeFaces(Shader& shader, const TextureCube& target, int level) {
+    const SavedGlState saved;
     const GpuMesh cube(pbr::cube());
     const GlFramebuffer framebuffer;
     const int size = std::max(1, target.size() >> level);
@@ -48,11 +51,10 @@ void renderCubeFaces(Shader& shader, const TextureCube& target, int level) {
         shader.set("view", views[size_t(face)]);
         cube.draw();
     }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glEnable(GL_DEPTH_TEST);
 }
 
 TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size) {
+    const SavedGlState saved;
     const int levels = int(std::floor(std::log2(double(size)))) + 1;
     TextureCube cube(size, levels);
     Shader shader("ibl/cubemap.vert", "ibl/equirect_to_cube.frag");
@@ -65,6 +67,7 @@ TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size)
 }
 
 TextureCube convolveIrradiance(const TextureCube& environment, int size, float sampleDelta) {
+    const SavedGlState saved;
     TextureCube irradiance(size, 1);
     Shader shader("ibl/cubemap.vert", "ibl/irradiance.frag");
     readFrom(shader, environment);
@@ -74,6 +77,7 @@ TextureCube convolveIrradiance(const TextureCube& environment, int size, float s
 }
 
 TextureCube prefilterSpecular(const TextureCube& environment, int size, int levels, int samples) {
+    const SavedGlState saved;
     TextureCube prefiltered(size, levels);
     Shader shader("ibl/cubemap.vert", "ibl/prefilter.frag");
     readFrom(shader, environment);
@@ -88,6 +92,7 @@ TextureCube prefilterSpecular(const TextureCube& environment, int size, int leve
 }
 
 Texture2D computeBrdfLut(int size, int samples, BrdfLutChannels channels) {
+    const SavedGlState saved;
     const bool sheen = channels == BrdfLutChannels::ScaleBiasSheen;
     Texture2D lut(size, size, sheen ? GL_RGBA16F : GL_RG16F);
     const GlFramebuffer framebuffer;
@@ -101,9 +106,18 @@ Texture2D computeBrdfLut(int size, int samples, BrdfLutChannels channels) {
     shader.set("sheen", sheen ? 1 : 0);
     const GpuMesh quad(pbr::quad());
     quad.draw();
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glEnable(GL_DEPTH_TEST);
     return lut;
+}
+
+void useIblMaps(Shader& shader, const TextureCube& irradiance, const TextureCube& prefiltered,
+                const Texture2D& brdfLut, int firstUnit) {
+    shader.set("irradianceMap", firstUnit);
+    shader.set("prefilterMap", firstUnit + 1);
+    shader.set("brdfLUT", firstUnit + 2);
+    shader.set("prefilterMaxLod", float(prefiltered.levels() - 1));
+    irradiance.bind(firstUnit);
+    prefiltered.bind(firstUnit + 1);
+    brdfLut.bind(firstUnit + 2);
 }
 
 Skybox::Skybox() : shader_("ibl/skybox.vert", "ibl/skybox.frag"), cube_(pbr::cube()) {
@@ -112,13 +126,15 @@ Skybox::Skybox() : shader_("ibl/skybox.vert", "ibl/skybox.frag"), cube_(pbr::cub
 
 void Skybox::draw(const TextureCube& environment, const glm::mat4& view,
                   const glm::mat4& projection) {
+    GLint depthFunc = GL_LESS;
+    glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
     glDepthFunc(GL_LEQUAL);  // the sky sits at depth 1, where the cleared depth is
     shader_.use();
     shader_.set("view", view);
     shader_.set("projection", projection);
     environment.bind(0);
     cube_.draw();
-    glDepthFunc(GL_LESS);
+    glDepthFunc(GLenum(depthFunc));  // the caller's, whatever it was
 }
 
 }  // namespace pbr

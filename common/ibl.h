@@ -43,6 +43,12 @@ enum class BrdfLutChannels { ScaleBias, ScaleBiasSheen };
 Texture2D computeBrdfLut(int size, int samples = 1024,
                          BrdfLutChannels channels = BrdfLutChannels::ScaleBias);
 
+// Binds the split-sum maps for shaders/include/ibl_ambient.glsl to units `firstUnit` (irradiance),
+// +1 (prefiltered) and +2 (BRDF LUT), points its samplers there, and sets prefilterMaxLod from
+// the prefiltered map's own level count.
+void useIblMaps(Shader& shader, const TextureCube& irradiance, const TextureCube& prefiltered,
+                const Texture2D& brdfLut, int firstUnit);
+
 // Draws a cube map behind everything else (depth 1, LEQUAL), tone-mapped like the samples.
 class Skybox {
 public:

@@ -67,6 +67,13 @@ Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& wha
     if (bytes.size() > size_t(std::numeric_limits<int>::max()))
         throw Error(what + ": image file too large");
     int width = 0, height = 0, channels = 0;
+    // A damaged header may claim any size: refuse more than 2^28 pixels (16384^2) before stb
+    // allocates for them.
+    if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels) &&
+        double(width) * double(height) > double(1 << 28)) {
+        throw Error(what + ": image too large (" + std::to_string(width) + " x " +
+                    std::to_string(height) + " pixels)");
+    }
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
         stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels,
                               wantChannels),
@@ -220,19 +227,21 @@ HdrImage readHdr(const fs::path& path) {
     return decodeHdr(bytes, displayPath(path));
 }
 
+std::string encodeHdr(const HdrImage& image) {
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != size_t(image.width) * size_t(image.height) * 3) {
+        throw Error("cannot write an empty or malformed HDR image");
+    }
+    std::string bytes;
+    if (!stbi_write_hdr_to_func(appendBytes, &bytes, image.width, image.height, 3,
+                                image.pixels.data())) {
+        throw Error("HDR encoding failed");
+    }
+    return bytes;
+}
+
 void writeHdr(const fs::path& path, const HdrImage& image) {
-    writeFileAtomically(path, [&] {
-        if (image.width <= 0 || image.height <= 0 ||
-            image.pixels.size() != size_t(image.width) * size_t(image.height) * 3) {
-            throw Error("cannot write an empty or malformed HDR image");
-        }
-        std::string bytes;
-        if (!stbi_write_hdr_to_func(appendBytes, &bytes, image.width, image.height, 3,
-                                    image.pixels.data())) {
-            throw Error("HDR encoding failed");
-        }
-        return bytes;
-    });
+    writeFileAtomically(path, [&] { return encodeHdr(image); });
 }
 
 Image flipRows(const Image& image) {

@@ -52,6 +52,8 @@ struct HdrImage {
 HdrImage readHdr(const std::filesystem::path& path);
 // The same from the file's bytes; `name` is what the error messages call it.
 HdrImage decodeHdr(std::string_view bytes, const std::string& name);
+// A Radiance .hdr file's bytes (RGBE, run-length encoded; same bytes for the same pixels).
+std::string encodeHdr(const HdrImage& image);
 // Writes a Radiance .hdr (RGBE, run-length encoded; same bytes for the same pixels), whole or not
 // at all. Throws Error("<path>: <reason>").
 void writeHdr(const std::filesystem::path& path, const HdrImage& image);

@@ -127,10 +127,13 @@ void writeKtx(const fs::path& path, const KtxImage& image) {
 }
 
 KtxImage readKtx(const fs::path& path) {
-    const std::string where = displayPath(path) + ": ";
     std::error_code ec;
-    if (!fs::exists(path, ec)) throw Error(where + "no such file");
-    const std::string bytes = readTextFile(path);
+    if (!fs::exists(path, ec)) throw Error(displayPath(path) + ": no such file");
+    return decodeKtx(readTextFile(path), displayPath(path));
+}
+
+KtxImage decodeKtx(std::string_view bytes, const std::string& name) {
+    const std::string where = name + ": ";
     size_t at = 0;
     auto need = [&](size_t n) {
         if (bytes.size() - at < n) throw Error(where + "truncated KTX file");
@@ -150,13 +153,10 @@ KtxImage readKtx(const fs::path& path) {
     const std::uint32_t type = get32(), typeSize = get32(), glFormat = get32(),
                         internalFormat = get32();
     get32();  // base internal format
+    // Every field is checked as the unsigned number it is before it becomes an int.
+    const std::uint32_t width = get32(), height = get32(), depth = get32(), arrayElements = get32(),
+                        faces = get32(), levels = get32(), keyValueBytes = get32();
     KtxImage image;
-    image.width = int(get32());
-    image.height = int(get32());
-    const std::uint32_t depth = get32(), arrayElements = get32();
-    image.faces = int(get32());
-    image.levels = int(std::max(1u, get32()));
-    const std::uint32_t keyValueBytes = get32();
     bool known = false;
     for (const FormatInfo& f : kFormats) {
         if (f.type == type && f.typeSize == typeSize && f.glFormat == glFormat &&
@@ -169,16 +169,32 @@ KtxImage readKtx(const fs::path& path) {
         throw Error(where + "unsupported KTX format (want RG16F, RGB16F, RGBA16F or RGBA32F)");
     if (depth > 1 || arrayElements != 0)
         throw Error(where + "3D and array KTX textures are not supported");
-    if (image.width < 1 || image.height < 1 || image.width > 65536 || image.height > 65536) {
-        throw Error(where + "bad KTX image size");
+    if (width < 1 || height < 1 || width > 65536 || height > 65536) {
+        throw Error(where + "bad KTX image size " + std::to_string(width) + " x " +
+                    std::to_string(height));
     }
+    if (faces != 1 && faces != 6)
+        throw Error(where + "faces must be 1 or 6, not " + std::to_string(faces));
+    image.width = int(width);
+    image.height = int(height);
+    image.faces = int(faces);
+    if (image.faces == 6 && image.width != image.height)
+        throw Error(where + "cube map faces must be square");
+    // 0 asks a loader to make the mip chain itself: level 0 is all the file holds.
+    const std::uint32_t maxLevels =
+        1 + std::uint32_t(std::log2(double(std::max(image.width, image.height))));
+    if (levels > maxLevels) {
+        throw Error(where + "bad mip level count " + std::to_string(levels) + " (at most " +
+                    std::to_string(maxLevels) + " for this size)");
+    }
+    image.levels = int(std::max(1u, levels));
 
     need(keyValueBytes);
     const size_t keyValueEnd = at + keyValueBytes;
     while (at < keyValueEnd) {
         const std::uint32_t size = get32();
         if (size > keyValueEnd - at) throw Error(where + "bad KTX key/value data");
-        const std::string pair = bytes.substr(at, size);
+        const std::string pair(bytes.substr(at, size));
         const size_t nul = pair.find('\0');
         if (nul == std::string::npos) throw Error(where + "bad KTX key/value data");
         std::string value = pair.substr(nul + 1);
@@ -188,9 +204,6 @@ KtxImage readKtx(const fs::path& path) {
     }
     at = keyValueEnd;
 
-    if (image.faces != 1 && image.faces != 6) throw Error(where + "faces must be 1 or 6");
-    const int maxLevels = 1 + int(std::log2(double(std::max(image.width, image.height))));
-    if (image.levels > maxLevels) throw Error(where + "bad mip level count");
     for (int level = 0; level < image.levels; ++level) {
         const std::uint32_t imageSize = get32();
         if (imageSize != image.imageBytes(level)) {
@@ -205,6 +218,7 @@ KtxImage readKtx(const fs::path& path) {
         }
     }
     if (at != bytes.size()) throw Error(where + "trailing data after the last KTX level");
+    check(image, where);  // what the writer demands, the reader demands too
     return image;
 }
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace pbr {
@@ -34,6 +35,8 @@ void writeKtx(const std::filesystem::path& path, const KtxImage& image);
 // Throws Error("<path>: <reason>") for anything but a complete, consistent KTX 1 file of one of
 // the formats above (wrong identifier, truncated, sizes that do not add up, ...).
 KtxImage readKtx(const std::filesystem::path& path);
+// The same from a file's bytes; `name` is what the error messages call it.
+KtxImage decodeKtx(std::string_view bytes, const std::string& name);
 
 // IEEE 754 half precision, for RG16F / RGBA16F data.
 std::uint16_t floatToHalf(float value);

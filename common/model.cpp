@@ -219,9 +219,9 @@ Model loadModel(const fs::path& file) {
 
     Assimp::Importer importer;
     const aiScene* scene =
-        importer.ReadFile(file.string(), aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                                             aiProcess_CalcTangentSpace | aiProcess_SortByPType |
-                                             aiProcess_ValidateDataStructure);
+        importer.ReadFile(utf8Path(file), aiProcess_Triangulate | aiProcess_GenSmoothNormals |
+                                              aiProcess_CalcTangentSpace | aiProcess_SortByPType |
+                                              aiProcess_ValidateDataStructure);
     if (!scene) {
         std::string reason = importer.GetErrorString();
         while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' '))
@@ -322,7 +322,7 @@ GpuModel::GpuModel(const Model& model, TextureFilter filter) {
         upload(m.occlusionTexture, ColorSpace::Linear);
     }
     for (const ModelPrimitive& p : model.primitives) {
-        primitives_.push_back({GpuMesh(p.mesh), &model.materials[size_t(p.material)], p.transform});
+        primitives_.push_back({GpuMesh(p.mesh), model.materials[size_t(p.material)], p.transform});
     }
 }
 

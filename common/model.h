@@ -88,14 +88,16 @@ Model loadModel(const std::filesystem::path& file);
 // The pixels of a texture reference (8-bit, channels as stored, or `wantChannels`).
 Image loadTextureImage(const Model& model, const TextureRef& ref, int wantChannels = 0);
 
-// The model on the GPU: one GpuMesh per primitive, each texture uploaded once.
+// The model on the GPU: one GpuMesh per primitive, each texture uploaded once. It keeps its own
+// copy of every material, so it owes nothing to the Model it was made from: `GpuModel
+// gpu(loadModel(file))` is fine.
 class GpuModel {
 public:
     explicit GpuModel(const Model& model, TextureFilter filter = TextureFilter::Trilinear);
 
     struct Primitive {
         GpuMesh mesh;
-        const Material* material;
+        Material material;
         glm::mat4 transform;
     };
     const std::vector<Primitive>& primitives() const { return primitives_; }

@@ -71,6 +71,11 @@ std::string displayPath(const fs::path& path) {
     return absolute.string();
 }
 
+std::string utf8Path(const fs::path& path) {
+    const std::u8string text = path.u8string();
+    return std::string(text.begin(), text.end());
+}
+
 std::string readTextFile(const fs::path& path) {
     std::error_code ec;
     if (fs::is_directory(path, ec)) throw Error(displayPath(path) + ": is a directory, not a file");

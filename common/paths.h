@@ -30,6 +30,8 @@ std::vector<EnvironmentVariable> environmentVariables();
 // A path as a user wants to read it in a message: relative to the working directory when it lies
 // below it, absolute otherwise.
 std::string displayPath(const std::filesystem::path& path);
+// The path in UTF-8, as libraries that take a char path (Assimp) expect on every platform.
+std::string utf8Path(const std::filesystem::path& path);
 // The whole file as a string; throws Error("<path>: <reason>").
 std::string readTextFile(const std::filesystem::path& path);
 

@@ -241,7 +241,7 @@ std::string Shader::name() const {
 }
 
 void Shader::use() const {
-    glUseProgram(program_.id());
+    useProgram(program_.id());
 }
 
 bool Shader::reload() {
@@ -252,7 +252,7 @@ bool Shader::reload() {
         return false;
     }
     locations_.clear();
-    glUseProgram(program_.id());
+    useProgram(program_.id());
     for (const auto& [name, value] : values_) apply(location(name), value);
     return true;
 }
@@ -293,10 +293,10 @@ void Shader::apply(GLint where, const Value& value) {
         value);
 }
 
-// Makes the program current first (a uniform set on the wrong program is a classic silent bug),
-// and remembers the value for reload.
+// Makes the program current first (a uniform set on the wrong program is a classic silent bug;
+// useProgram skips the call when it is current already), and remembers the value for reload.
 void Shader::store(const std::string& name, const Value& value) {
-    glUseProgram(program_.id());
+    useProgram(program_.id());
     apply(location(name), value);
     values_[name] = value;
 }

@@ -228,8 +228,8 @@ PbrTextures loadPbrTextures(const std::filesystem::path& dir, TextureFilter filt
     Texture2D normalMap(normal, ColorSpace::Linear, filter);
     Texture2D metallic = Texture2D::load(files.metallic, ColorSpace::Linear, filter);
     Texture2D roughness = Texture2D::load(files.roughness, ColorSpace::Linear, filter);
-    Texture2D ao = files.ao ? Texture2D::load(*files.ao, ColorSpace::Srgb, filter)
-                            : Texture2D(Image{1, 1, 3, {255, 255, 255}}, ColorSpace::Srgb, filter);
+    Texture2D ao = files.ao ? Texture2D::load(*files.ao, ColorSpace::Linear, filter)
+                            : Texture2D(Image{1, 1, 1, {255}}, ColorSpace::Linear, filter);
     return {std::move(albedo), std::move(normalMap), std::move(metallic), std::move(roughness),
             std::move(ao)};
 }

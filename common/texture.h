@@ -71,8 +71,8 @@ private:
 // A PBR material folder: albedo, normal, metallic, roughness and optionally ao, under the names
 // real texture sets use (see material_folder.h), each .png, .jpg or .jpeg. Without ao, ao is
 // white, as the text suggests; any other missing map, and two files for one map, are an Error
-// naming the folder. Maps may differ in size: each is sampled by uv. albedo and ao are decoded
-// from sRGB; normal, metallic and roughness are linear; a DirectX normal map is flipped to
+// naming the folder. Maps may differ in size: each is sampled by uv. albedo is decoded
+// from sRGB; normal, metallic, roughness and ao are linear; a DirectX normal map is flipped to
 // OpenGL's convention (green up).
 struct PbrTextures {
     Texture2D albedo, normal, metallic, roughness, ao;

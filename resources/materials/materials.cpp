@@ -75,7 +75,7 @@ MaterialSet finish(const std::string& name, const Maps& m) {
     set.roughness = grey(m.roughness, false);
     Field ao = procedural::occlusionFromHeight(m.height, m.aoRadius, m.aoStrength);
     for (size_t i = 0; i < ao.values.size(); ++i) ao.values[i] *= m.cavity.values[i];
-    set.ao = grey(ao, true);
+    set.ao = grey(ao, false);  // occlusion is linear data (glTF, and the text's code)
     return set;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The project's own PBR material sets, made from noise: rusted iron, gold, grass, plastic, wall.
 // Each set is the tutorial's five maps: albedo (sRGB), normal (tangent space, OpenGL +Y),
-// metallic, roughness (linear) and ao (sRGB-encoded, as the samples decode it).
+// metallic, roughness and ao (linear).
 #include <filesystem>
 #include <string>
 #include <vector>

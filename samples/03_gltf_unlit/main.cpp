@@ -11,12 +11,13 @@
 #include "paths.h"
 
 int main(int argc, char** argv) try {
-    pbr::App app(argc, argv,
-                 {.name = "03_gltf_unlit",
-                  .title = "03 glTF unlit",
-                  .flags = {pbr::FlagSpec::text(
-                      "--model", "FILE",
-                      "a .gltf or .glb to draw unlit (default: the project's showcase)")}});
+    pbr::App app(
+        argc, argv,
+        {.name = "03_gltf_unlit",
+         .title = "03 glTF unlit",
+         .flags = {pbr::FlagSpec::text(
+             "--model", "FILE", "a .gltf or .glb to draw unlit (default: the project's showcase)")},
+         .srgbTarget = true});  // linear out of the shader, encoded and blended by the GL
 
     const pbr::Model model = pbr::loadModel(
         app.flag("--model").value_or((pbr::modelDir() / "unlit_showcase.gltf").string()));
@@ -38,9 +39,10 @@ int main(int argc, char** argv) try {
 
     glEnable(GL_DEPTH_TEST);
     while (app.nextFrame()) {
-        // Mid grey, not the text's white: glTF's default material is white, and a model in it
-        // must not vanish into the background. (Stored as is: the target holds sRGB values.)
-        glClearColor(0.3f, 0.3f, 0.3f, 1.0f);
+        // Mid grey (sRGB 0.3, byte 76), not the text's white: glTF's default material is white,
+        // and a model in it must not vanish into the background. A linear value: the sRGB
+        // target encodes the clear colour too.
+        glClearColor(0.0723f, 0.0723f, 0.0723f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
         shader.use();
@@ -52,7 +54,7 @@ int main(int argc, char** argv) try {
         // Opaque and masked primitives first, then the blended ones over them.
         for (const bool blendPass : {false, true}) {
             for (const pbr::GpuModel::Primitive& primitive : gpuModel.primitives()) {
-                const pbr::Material& material = *primitive.material;
+                const pbr::Material& material = primitive.material;
                 if ((material.alphaMode == pbr::AlphaMode::Blend) != blendPass) continue;
                 if (blendPass) {
                     glEnable(GL_BLEND);

@@ -61,9 +61,6 @@ int main(int argc, char** argv) try {
         shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
         shader.set("ao", 1.0f);
     }
-    shader.set("irradianceMap", 5);
-    shader.set("prefilterMap", 6);
-    shader.set("brdfLUT", 7);
     pbr::setPointLights(shader, pbr::kGridLightPositions, glm::vec3(300.0f));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
     const pbr::SphereGrid row{.nrRows = 1, .nrColumns = 5, .spacing = 2.5f, .z = -2.0f};
@@ -77,9 +74,7 @@ int main(int argc, char** argv) try {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
-        irradianceMap.bind(5);
-        prefilterMap.bind(6);
-        brdfLUT.bind(7);
+        pbr::useIblMaps(shader, irradianceMap, prefilterMap, brdfLUT, 5);
         if (textured) {
             for (int col = 0; col < row.nrColumns; ++col) {
                 materials[size_t(col)].bind();

@@ -8,13 +8,12 @@ uniform sampler2D baseColorTexture;  // sRGB texture (white 1x1 when the materia
 uniform int alphaMode;               // 0 opaque, 1 mask, 2 blend
 uniform float alphaCutoff;
 
-#include "srgb.glsl"
-
 void main()
 {
     vec4 color = texture(baseColorTexture, TexCoords) * VertexColor;  // linear
     if (alphaMode == 1 && color.a < alphaCutoff)
         discard;
-    // our framebuffer stores sRGB-encoded values, as the swapchain of the cookbook does
-    FragColor = vec4(linearToSrgb(color.rgb), alphaMode == 2 ? color.a : 1.0);
+    // Linear out: the render target is sRGB (as the cookbook's swapchain is), so the GL encodes,
+    // and blends BLEND materials in linear light before it does.
+    FragColor = vec4(color.rgb, alphaMode == 2 ? color.a : 1.0);
 }

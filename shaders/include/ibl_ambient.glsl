@@ -3,10 +3,11 @@
 // roughness's mip level times the BRDF LUT's scale and bias to F0. Needs brdf.glsl first.
 
 uniform samplerCube irradianceMap;  // irradiance / pi of the environment
-uniform samplerCube prefilterMap;   // mip m: the environment prefiltered for roughness m / 4
+uniform samplerCube prefilterMap;   // mip m: the environment prefiltered for roughness m / maxLod
 uniform sampler2D brdfLUT;          // x = NdotV, y = roughness: (scale, bias) to F0
-
-const float MAX_REFLECTION_LOD = 4.0;  // the prefiltered map's last mip level
+// The prefiltered map's last mip level (the text's MAX_REFLECTION_LOD, 4 for five levels), set
+// from the map itself by pbr::useIblMaps, never by hand.
+uniform float prefilterMaxLod;
 
 vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, float ao)
 {
@@ -20,7 +21,7 @@ vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, 
     vec3 irradiance = texture(irradianceMap, N).rgb;
     vec3 diffuse = irradiance * albedo;
 
-    vec3 prefilteredColor = textureLod(prefilterMap, R, roughness * MAX_REFLECTION_LOD).rgb;
+    vec3 prefilteredColor = textureLod(prefilterMap, R, roughness * prefilterMaxLod).rgb;
     vec2 envBRDF = texture(brdfLUT, vec2(NdotV, roughness)).rg;
     vec3 specular = prefilteredColor * (F * envBRDF.x + envBRDF.y);
 

@@ -2,7 +2,7 @@
 // shader declares the inputs TexCoords, WorldPos, Normal and Tangent.
 #include "normal_mapping.glsl"
 
-// albedoMap and aoMap are sRGB textures, so the sampler returns linear values
+// albedoMap is an sRGB texture, so the sampler returns linear values; aoMap holds linear data
 uniform sampler2D albedoMap;
 uniform sampler2D normalMap;
 uniform sampler2D metallicMap;

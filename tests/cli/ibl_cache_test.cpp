@@ -92,6 +92,25 @@ TEST(IblCache, DamagedOrStaleFilesAreRecomputedNotDrawn) {
     }
     EXPECT_TRUE(cacheFiles(cache) == stored) << "the damaged files were not replaced";
 
+    // A header that lies: a level count of 0xFFFFFFFF (once read as -1, and a crash), a face
+    // count of 0xFFFFFFFF. Named, recomputed, replaced; the picture unchanged.
+    for (const auto& [offset, name] : {std::pair{56, "sunny_courtyard.prefiltered.ktx"},
+                                       std::pair{52, "sunny_courtyard.environment.ktx"}}) {
+        std::string lying = stored.at(name);
+        for (int i = 0; i < 4; ++i) lying[size_t(offset + i)] = char(0xff);
+        std::ofstream(cache / name, std::ios::binary)
+            .write(lying.data(), std::streamsize(lying.size()));
+    }
+    const Run05 lying = run05(cache, dir / "lying.png");
+    EXPECT_EQ(lying.run.exitCode, 0) << lying.run.err;
+    EXPECT_TRUE(lying.image == cold.image);
+    EXPECT_NE(lying.run.err.find("prefiltered.ktx: bad mip level count 4294967295"),
+              std::string::npos)
+        << lying.run.err;
+    EXPECT_NE(lying.run.err.find("environment.ktx: faces must be 1 or 6"), std::string::npos)
+        << lying.run.err;
+    EXPECT_TRUE(cacheFiles(cache) == stored) << "the lying files were not replaced";
+
     // Stale: another environment under the same file name leaves its maps under the same cache
     // names; going back to the first one finds keys that do not match.
     const fs::path other = dir / "other" / "sunny_courtyard.hdr";

@@ -14,6 +14,7 @@
 #include "framebuffer.h"
 #include "ibl.h"
 #include "mesh.h"
+#include "model.h"
 #include "paths.h"
 #include "support/process.h"
 #include "texture.h"
@@ -292,12 +293,7 @@ TEST(Gl, WhiteFurnace) {
     shader.set("albedo", glm::vec3(1.0f));
     shader.set("ao", 1.0f);
     shader.set("lightCount", 0);
-    shader.set("irradianceMap", 0);
-    shader.set("prefilterMap", 1);
-    shader.set("brdfLUT", 2);
-    irradiance.bind(0);
-    prefiltered.bind(1);
-    lut.bind(2);
+    useIblMaps(shader, irradiance, prefiltered, lut, 0);
     const GpuMesh sphere(uvSphere(64, 64));
     for (int metallic = 0; metallic < 2; ++metallic) {
         for (int col = 0; col < kColumns; ++col) {
@@ -391,6 +387,126 @@ TEST(Gl, WhiteFurnace) {
     EXPECT_NEAR(stats[kColumns].highest, 1.0, 0.02);
     // Single scattering loses energy with roughness: the roughest metal keeps well under 90 %.
     EXPECT_LT(stats[2 * kColumns - 1].sum / stats[2 * kColumns - 1].count, 0.9);
+    while (app.nextFrame()) {
+    }
+}
+
+// The IBL passes and the skybox change framebuffers, viewport, depth and culling state, the
+// program and texture bindings; each must hand the caller's state back as it found it.
+TEST(Gl, IblPassesLeaveTheCallersStateAlone) {
+    const fs::path dir = test::testOutputDir("gl_state");
+    App app = makeApp(dir);
+    GlFramebuffer mine;
+    GlRenderbuffer mineColor;
+    glBindRenderbuffer(GL_RENDERBUFFER, mineColor.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 32, 32);
+    glBindFramebuffer(GL_FRAMEBUFFER, mine.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                              mineColor.id());
+    glViewport(3, 5, 17, 19);
+    glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glEnable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    Shader& shader = app.shader("common/pbr.vert", "01_lighting/pbr.frag");
+    shader.use();
+    const Texture2D marker(Image{1, 1, 3, {1, 2, 3}}, ColorSpace::Linear);
+    marker.bind(0);
+    glActiveTexture(GL_TEXTURE3);
+
+    auto expectUnchanged = [&](const char* pass) {
+        GLint value = 0, viewport[4] = {};
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &value);
+        EXPECT_EQ(GLuint(value), mine.id()) << pass;
+        glGetIntegerv(GL_VIEWPORT, viewport);
+        EXPECT_EQ(viewport[0], 3) << pass;
+        EXPECT_EQ(viewport[3], 19) << pass;
+        EXPECT_FALSE(glIsEnabled(GL_DEPTH_TEST)) << pass;
+        glGetIntegerv(GL_DEPTH_FUNC, &value);
+        EXPECT_EQ(value, GL_GREATER) << pass;
+        EXPECT_TRUE(glIsEnabled(GL_CULL_FACE)) << pass;
+        EXPECT_TRUE(glIsEnabled(GL_BLEND)) << pass;
+        glGetIntegerv(GL_CURRENT_PROGRAM, &value);
+        EXPECT_EQ(GLuint(value), shader.id()) << pass;
+        glGetIntegerv(GL_ACTIVE_TEXTURE, &value);
+        EXPECT_EQ(value, GL_TEXTURE3) << pass;
+        glActiveTexture(GL_TEXTURE0);
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &value);
+        EXPECT_EQ(GLuint(value), marker.id()) << pass;
+        glActiveTexture(GL_TEXTURE3);
+    };
+    const Texture2D white(HdrImage{16, 8, std::vector<float>(16 * 8 * 3, 1.0f)});
+    const TextureCube environment = equirectangularToCubemap(white, 16);
+    expectUnchanged("equirectangularToCubemap");
+    const TextureCube irradiance = convolveIrradiance(environment, 4);
+    expectUnchanged("convolveIrradiance");
+    const TextureCube prefiltered = prefilterSpecular(environment, 8, 2, 16);
+    expectUnchanged("prefilterSpecular");
+    const Texture2D lut = computeBrdfLut(8, 16);
+    expectUnchanged("computeBrdfLut");
+    // The skybox draws (its program, its texture on unit 0); it keeps the depth function.
+    Skybox skybox;
+    skybox.draw(environment, glm::mat4(1.0f), glm::mat4(1.0f));
+    GLint depthFunc = 0;
+    glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+    EXPECT_EQ(depthFunc, GL_GREATER) << "the skybox forced its own depth function";
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    while (app.nextFrame()) {
+    }
+}
+
+// Setting a uniform makes its program current, but only when it is not current already: a frame
+// of 01 sets some 200 uniforms, and each glUseProgram is a state change. Counted by wrapping
+// glad's entry point.
+PFNGLUSEPROGRAMPROC originalUseProgram = nullptr;
+int useProgramCalls = 0;
+void GLAD_API_PTR countingUseProgram(GLuint program) {
+    ++useProgramCalls;
+    originalUseProgram(program);
+}
+
+TEST(Gl, SettingUniformsBindsTheProgramOnce) {
+    const fs::path dir = test::testOutputDir("gl_use_program");
+    App app = makeApp(dir);
+    Shader& first = app.shader("common/pbr.vert", "01_lighting/pbr.frag");
+    Shader& second = app.shader("common/pbr.vert", "04_ibl_irradiance/pbr.frag");
+    originalUseProgram = glad_glUseProgram;
+    glad_glUseProgram = countingUseProgram;
+    useProgramCalls = 0;
+    for (int i = 0; i < 10; ++i) first.set("roughness", 0.1f * float(i));
+    first.setModel(glm::mat4(1.0f));
+    const int forFirst = useProgramCalls;
+    for (int i = 0; i < 10; ++i) second.set("metallic", 0.1f * float(i));
+    const int forBoth = useProgramCalls;
+    glad_glUseProgram = originalUseProgram;
+    EXPECT_LE(forFirst, 1);
+    EXPECT_EQ(forBoth - forFirst, 1);
+    GLint current = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    EXPECT_EQ(GLuint(current), second.id());
+    while (app.nextFrame()) {
+    }
+}
+
+// A GpuModel owes nothing to the Model it was made from: made from a temporary, every material
+// is still readable (under AddressSanitizer a pointer into the gone Model is a failure).
+TEST(Gl, AGpuModelOutlivesTheModelItWasMadeFrom) {
+    const fs::path dir = test::testOutputDir("gl_gpu_model");
+    App app = makeApp(dir);
+    const GpuModel gpu(loadModel(modelDir() / "unlit_showcase.gltf"));
+    ASSERT_EQ(gpu.primitives().size(), 4u);
+    // The showcase's second object, the sphere, carries the base colour factor (1, 0.42, 0.08).
+    bool sawSphere = false;
+    for (const GpuModel::Primitive& primitive : gpu.primitives()) {
+        if (primitive.material.name == "base colour factor") {
+            sawSphere = true;
+            EXPECT_FLOAT_EQ(primitive.material.baseColorFactor.g, 0.42f);
+        }
+    }
+    EXPECT_TRUE(sawSphere);
     while (app.nextFrame()) {
     }
 }

@@ -225,7 +225,7 @@ TEST(Reference, LightingTextured02MatchesTheCpuBrdfWithTexels) {
                               srgbToLinear(albedo.at(texelX, texelY, 2))};
             surface.metallic = metallic.at(texelX, texelY, 0) / 255.0f;
             surface.roughness = roughness.at(texelX, texelY, 0) / 255.0f;
-            surface.ao = srgbToLinear(ao.at(texelX, texelY, 0));
+            surface.ao = float(ao.at(texelX, texelY, 0)) / 255.0f;  // occlusion is linear
             return toBytes(
                 cpu::shadePointLights(surface, glm::vec3(kCamera), std::span(&light, 1)));
         });

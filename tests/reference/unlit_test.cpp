@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <fstream>
 #include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -138,6 +140,65 @@ TEST(Reference, GltfUnlit03IsFactorTimesVertexColourTimesTexel) {
                 textured, worst);
     EXPECT_GT(compared, 2000);
     EXPECT_GT(textured, 400);
+}
+
+// glTF's BLEND mode mixes colours in linear light (the specification's alpha coverage: the
+// result is the source times alpha plus the destination times 1 - alpha, both as light). A red
+// quad of alpha 0.5 over an opaque green one must come out encode(0.5 red + 0.5 green) =
+// (188, 188, 0), not the (128, 128, 0) of blending the sRGB-encoded bytes.
+TEST(Reference, GltfUnlit03BlendsInLinearLight) {
+    const fs::path dir = testOutputDir("reference_03_blend");
+    // Two quads facing +Z: the back one opaque green, 2 x 2; the front one, 0.1 nearer, red at
+    // alpha 0.5, 1 x 1. Counter-clockwise from the camera.
+    std::string bin;
+    auto put = [&bin](const auto& value) {
+        bin.append(reinterpret_cast<const char*>(&value), sizeof value);
+    };
+    for (const auto& [size, z] : {std::pair{1.0f, 0.0f}, std::pair{0.5f, 0.1f}}) {
+        for (const auto& [x, y] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
+            put(float(x) * size);
+            put(float(y) * size);
+            put(z);
+        }
+    }
+    for (const std::uint16_t index : {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7}) put(index);
+    std::ofstream(dir / "quads.bin", std::ios::binary) << bin;
+    std::ofstream(dir / "quads.gltf") << R"({
+  "asset": {"version": "2.0"},
+  "extensionsUsed": ["KHR_materials_unlit"],
+  "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+  "meshes": [{"primitives": [
+    {"attributes": {"POSITION": 0}, "indices": 1, "material": 0},
+    {"attributes": {"POSITION": 0}, "indices": 2, "material": 1}]}],
+  "materials": [
+    {"pbrMetallicRoughness": {"baseColorFactor": [0, 1, 0, 1]},
+     "extensions": {"KHR_materials_unlit": {}}},
+    {"pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 0.5]}, "alphaMode": "BLEND",
+     "extensions": {"KHR_materials_unlit": {}}}],
+  "buffers": [{"uri": "quads.bin", "byteLength": 120}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 96},
+                  {"buffer": 0, "byteOffset": 96, "byteLength": 24}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+     "min": [-1, -1, 0], "max": [1, 1, 0.1]},
+    {"bufferView": 1, "byteOffset": 0, "componentType": 5123, "count": 6, "type": "SCALAR"},
+    {"bufferView": 1, "byteOffset": 12, "componentType": 5123, "count": 6, "type": "SCALAR"}]
+})";
+    const SampleRender render = renderSample(
+        "03_gltf_unlit", dir / "blend.png",
+        {"--model", (dir / "quads.gltf").string(), "--msaa", "0", "--size", "200x200"});
+    ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+    const Image image = readImage(render.image, 3);
+    auto expectPixel = [&](int x, int y, glm::dvec3 linear) {
+        for (int c = 0; c < 3; ++c) {
+            const int expected = int(std::lround(linearToSrgb(linear[c]) * 255.0));
+            EXPECT_NEAR(image.at(x, y, c), expected, 1)
+                << "pixel " << x << ", " << y << " channel " << c;
+        }
+    };
+    expectPixel(100, 100, {0.5, 0.5, 0.0});  // the centre: both quads
+    expectPixel(100, 60, {0.0, 1.0, 0.0});   // the back quad alone
+    EXPECT_NEAR(image.at(100, 100, 0), 188, 1);
 }
 
 }  // namespace

@@ -129,9 +129,12 @@ std::string entryHtml(const ReportEntry& e) {
     const std::string verdict = e.status == "pass"   ? "PASS"
                                 : e.status == "fail" ? "FAIL"
                                                      : "UPDATED";
-    // ok: 1 within the limit, 0 over it, -1 informative (no limit)
-    auto row = [](const std::string& metric, const std::string& value, const std::string& limit,
-                  int ok) {
+    // ok: 1 within the limit, 0 over it, -1 informative (no limit). An update is judged by no
+    // gate: its rows say what changed against the old golden.
+    const bool judged = e.status != "updated";
+    auto row = [judged](const std::string& metric, const std::string& value,
+                        const std::string& limit, int ok) {
+        if (!judged) ok = -1;
         const std::string verdict = ok < 0 ? "<td></td>"
                                     : ok   ? "<td class=\"ok\">ok</td>"
                                            : "<td class=\"bad\">over</td>";
@@ -161,7 +164,10 @@ std::string entryHtml(const ReportEntry& e) {
         const std::string src = "img/" + e.id + "." + kind + ".png";
         html << "<figure><a href=\"" << htmlEscape(src) << "\"><img src=\"" << htmlEscape(src)
              << "\" alt=\"" << kind << "\"></a><figcaption>"
-             << (std::string(kind) == "diff" ? "difference &times;16" : kind)
+             << (std::string(kind) == "diff"       ? "difference &times;16"
+                 : judged                          ? kind
+                 : std::string(kind) == "expected" ? "old golden"
+                                                   : "new golden")
              << "</figcaption></figure>\n";
     }
     html << "</div>\n</section>\n";
@@ -246,11 +252,23 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
     entry.gate = gate;
 
     if (updating()) {
+        // The report shows what the update changed: the new picture against the old golden
+        // (against itself when there was none, or its size changed).
+        Image previous = actual;
+        try {
+            const Image old = readImage(goldenPath, 3);
+            if (old.width == actual.width && old.height == actual.height) previous = old;
+        } catch (const std::exception&) {
+        }
+        entry.diff = compareImages(actual, previous, gate.channelThreshold);
+        const Image diffImage = differenceImage(actual, previous, 16);
+        const fs::path previousPath = render.image.parent_path() / (name + ".old-golden.png");
+        writeFileAtomically(previousPath, encodePng(previous));
         copyFile(render.image, goldenPath);
         writeMetadata(fs::path(PBR_GOLDEN_DIR) / (name + ".json"), name, actual, render.renderer,
                       gate);
         entry.status = "updated";
-        addReportEntry(entry, goldenPath, render.image, differenceImage(actual, actual, 16));
+        addReportEntry(entry, previousPath, render.image, diffImage);
         std::printf("updated golden %s: look at it before committing\n", goldenPath.c_str());
         return ::testing::AssertionSuccess();
     }
