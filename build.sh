@@ -92,6 +92,21 @@ build() {  # build PRESET
     cmake --build --preset "$1" -j "$(nproc)"
 }
 
+# A windowed-only configuration (no OSMesa, no EGL: what macOS and Windows have) must configure,
+# build and run: --help works, and without a display the sample says what is missing.
+check_windowed_build() {
+    echo "build.sh: the windowed-only configuration (no OSMesa, no EGL)" >&2
+    build windowed
+    local sample=build/windowed/bin/01_lighting output status=0
+    "$sample" --help >/dev/null || { echo "build.sh: $sample --help failed" >&2; exit 1; }
+    output=$(env -u DISPLAY -u WAYLAND_DISPLAY "$sample" 2>&1) || status=$?
+    if [ "$status" -ne 1 ] || ! grep -q "no offscreen backend" <<<"$output"; then
+        echo "build.sh: $sample without a display should fail naming the missing backend; it said: $output" >&2
+        exit 1
+    fi
+    echo "build.sh: windowed-only build: ok ($output)" >&2
+}
+
 case "${1:-}" in
     run)
         shift
@@ -108,5 +123,6 @@ case "${1:-}" in
         echo "build.sh: the same tests under AddressSanitizer + UndefinedBehaviorSanitizer" >&2
         build asan
         ctest --preset asan -j "$(nproc)"
+        check_windowed_build
         ;;
 esac

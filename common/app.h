@@ -126,6 +126,7 @@ private:
     bool noDisplayFallback_ = false;
     bool finished_ = false;
     int glErrorCount_ = 0;
+    int debugErrorsSinceCheck_ = 0;  // errors KHR_debug reported since the last glGetError loop
     std::string firstGlError_;
 
     static void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,

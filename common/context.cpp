@@ -11,7 +11,16 @@ std::vector<std::string> offscreenBackends() {
 #endif
 #ifdef PBR_HAVE_EGL
     backends.push_back("egl");
+    backends.push_back("egl-software");
 #endif
+    return backends;
+}
+
+std::vector<std::string> softwareBackends() {
+    std::vector<std::string> backends;
+    for (const std::string& name : offscreenBackends()) {
+        if (name != "egl") backends.push_back(name);
+    }
     return backends;
 }
 
@@ -22,29 +31,38 @@ std::string builtInList() {
     return list.empty() ? "none" : list;
 }
 
-std::unique_ptr<Context> createBackend(const std::string& backend, int width, int height) {
+std::unique_ptr<Context> createBackend(const std::string& backend, int width, int height,
+                                       bool debug) {
+    (void)width, (void)height, (void)debug;  // unused when no backend is built in
 #ifdef PBR_HAVE_OSMESA
     if (backend == "osmesa") return createOsMesaContext(width, height);
 #endif
 #ifdef PBR_HAVE_EGL
-    if (backend == "egl") return createEglContext(width, height);
+    if (backend == "egl") return createEglContext(width, height, false, debug);
+    if (backend == "egl-software") return createEglContext(width, height, true, debug);
 #endif
     throw Error("--backend " + backend + ": not built into this binary (it has: " + builtInList() +
                 ")");
 }
 }  // namespace
 
-std::unique_ptr<Context> createOffscreenContext(const std::string& backend, int width, int height) {
-    if (!backend.empty()) return createBackend(backend, width, height);
+std::unique_ptr<Context> createOffscreenContext(const std::string& backend, int width, int height,
+                                                bool debug) {
+    if (!backend.empty()) return createBackend(backend, width, height, debug);
     std::string reasons;
     for (const std::string& candidate : offscreenBackends()) {
+        if (candidate == "egl-software") continue;  // "egl" covers it when nothing else works
         try {
-            return createBackend(candidate, width, height);
+            return createBackend(candidate, width, height, debug);
         } catch (const Error& e) {
             reasons += (reasons.empty() ? "" : "; ") + std::string(e.what());
         }
     }
-    throw Error("no offscreen backend works: " + (reasons.empty() ? "none built in" : reasons));
+    if (offscreenBackends().empty()) {
+        throw Error(
+            "--headless: this build has no offscreen backend (built without OSMesa and EGL)");
+    }
+    throw Error("no offscreen backend works: " + reasons);
 }
 
 }  // namespace pbr

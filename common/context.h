@@ -47,22 +47,32 @@ private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// An offscreen context from `backend`: "osmesa", "egl", or "" for the first that works, in
-// this order: OSMesa (always software rendering, so its pictures match the goldens on any
-// machine), then EGL (a GPU where a driver offers one; the only way on Mesa 25.1 and later, which
-// dropped OSMesa). Throws Error naming each backend's reason when none works.
-std::unique_ptr<Context> createOffscreenContext(const std::string& backend, int width, int height);
+// An offscreen context from `backend`, or "" for the first that works, in this order:
+//   "osmesa"        Mesa's off-screen library: always software rendering (llvmpipe), so its
+//                   pictures match the goldens on any machine;
+//   "egl"           EGL without a window system: a GPU where a driver offers one, else Mesa's
+//                   surfaceless platform (the only way on Mesa 25.1 and later, without OSMesa);
+//   "egl-software"  EGL on Mesa's software rasterizer only (its software device, else the
+//                   surfaceless platform if that renders in software): the goldens' EGL path on
+//                   a machine with a GPU.
+// `debug` asks for a debug context where the platform can make one (EGL; OSMesa has no such
+// attribute), so that KHR_debug reports every error. Throws Error naming each backend's reason
+// when none works.
+std::unique_ptr<Context> createOffscreenContext(const std::string& backend, int width, int height,
+                                                bool debug);
 
-// The offscreen backends this build has, in the automatic order.
+// The offscreen backends this build has, in the automatic order; and those of them that always
+// render in software (the ones the golden tests compare).
 std::vector<std::string> offscreenBackends();
+std::vector<std::string> softwareBackends();
 
 // The single backends (each throws Error with its reason).
 std::unique_ptr<Context> createOsMesaContext(int width, int height);
-std::unique_ptr<Context> createEglContext(int width, int height);
+std::unique_ptr<Context> createEglContext(int width, int height, bool softwareOnly, bool debug);
 
-// A GLFW window with a GL 3.3 core context. Returns nullptr, with the reason in `whyNot`, when
-// there is no display to open it on.
+// A GLFW window with a GL 3.3 core context (a debug context when `debug`). Returns nullptr, with
+// the reason in `whyNot`, when there is no display to open it on.
 std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, int height,
-                                           std::string& whyNot);
+                                           bool debug, std::string& whyNot);
 
 }  // namespace pbr

@@ -69,7 +69,9 @@ struct ChosenDisplay {
     std::string platform;
 };
 
-ChosenDisplay chooseDisplay() {
+// The display to render on. `softwareOnly`: Mesa's software device, else the surfaceless
+// platform (checked to render in software once the context exists); never a GPU device.
+ChosenDisplay chooseDisplay(bool softwareOnly) {
     const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
         eglGetProcAddress("eglGetPlatformDisplayEXT"));
@@ -91,10 +93,15 @@ ChosenDisplay chooseDisplay() {
                     if (!softwareDevice) softwareDevice = device;
                     continue;
                 }
+                if (softwareOnly) continue;
                 EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
                 if (display != EGL_NO_DISPLAY) return {display, "device"};
             }
         }
+    }
+    if (softwareOnly && softwareDevice) {
+        EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, softwareDevice, nullptr);
+        if (display != EGL_NO_DISPLAY) return {display, "software-device"};
     }
     if (hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
         EGLDisplay display =
@@ -103,18 +110,24 @@ ChosenDisplay chooseDisplay() {
     }
     if (softwareDevice) {
         EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, softwareDevice, nullptr);
-        if (display != EGL_NO_DISPLAY) return {display, "device (software)"};
+        if (display != EGL_NO_DISPLAY) return {display, "software-device"};
     }
+    if (softwareOnly) return {EGL_NO_DISPLAY, "software"};
     return {eglGetDisplay(EGL_DEFAULT_DISPLAY), "default"};
 }
 
 class EglContext final : public OffscreenContext {
 public:
-    EglContext(int width, int height) : OffscreenContext(width, height) {
-        ChosenDisplay chosen = chooseDisplay();
+    EglContext(int width, int height, bool softwareOnly, bool debug)
+        : OffscreenContext(width, height), softwareOnly_(softwareOnly) {
+        ChosenDisplay chosen = chooseDisplay(softwareOnly);
         display_ = chosen.display;
         platform_ = chosen.platform;
-        if (display_ == EGL_NO_DISPLAY) throw Error("egl: no display (" + eglErrorText() + ")");
+        if (display_ == EGL_NO_DISPLAY) {
+            throw Error(std::string(softwareOnly ? "egl-software: no software display ("
+                                                 : "egl: no display (") +
+                        eglErrorText() + ")");
+        }
         EGLint major = 0, minor = 0;
         if (!eglInitialize(display_, &major, &minor)) {
             throw Error("egl: cannot initialise the " + platform_ + " display (" + eglErrorText() +
@@ -122,7 +135,7 @@ public:
         }
         keepDriDriversLoaded();
         try {
-            create();
+            create(major * 10 + minor >= 15, debug);
         } catch (...) {
             release();
             throw;
@@ -130,10 +143,12 @@ public:
     }
     ~EglContext() override { release(); }
 
-    std::string backend() const override { return "egl/" + platform_; }
+    std::string backend() const override {
+        return std::string(softwareOnly_ ? "egl-software/" : "egl/") + platform_;
+    }
 
 private:
-    void create() {
+    void create(bool egl15, bool debug) {
         if (!eglBindAPI(EGL_OPENGL_API)) throw Error("egl: desktop OpenGL is not available");
         const EGLint configAttributes[] = {
             EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE,
@@ -143,16 +158,25 @@ private:
         if (!eglChooseConfig(display_, configAttributes, &config, 1, &configs) || configs < 1) {
             throw Error("egl: no config for desktop OpenGL on the " + platform_ + " display");
         }
-        const EGLint contextAttributes[] = {
-            EGL_CONTEXT_MAJOR_VERSION,
-            3,
-            EGL_CONTEXT_MINOR_VERSION,
-            3,
-            EGL_CONTEXT_OPENGL_PROFILE_MASK,
-            EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-            EGL_NONE,
+        std::vector<EGLint> contextAttributes = {
+            EGL_CONTEXT_MAJOR_VERSION,       3,
+            EGL_CONTEXT_MINOR_VERSION,       3,
+            EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
         };
-        context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes);
+        if (debug) {
+            // A debug context, so that KHR_debug reports every error (EGL 1.5's attribute, else
+            // EGL_KHR_create_context's flag); without either, an ordinary context.
+            if (egl15) {
+                contextAttributes.insert(contextAttributes.end(),
+                                         {EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE});
+            } else if (hasExtension(eglQueryString(display_, EGL_EXTENSIONS),
+                                    "EGL_KHR_create_context")) {
+                contextAttributes.insert(contextAttributes.end(),
+                                         {EGL_CONTEXT_FLAGS_KHR, EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR});
+            }
+        }
+        contextAttributes.push_back(EGL_NONE);
+        context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes.data());
         if (context_ == EGL_NO_CONTEXT) {
             throw Error("egl: cannot create a GL 3.3 core context (" + eglErrorText() + ")");
         }
@@ -168,6 +192,16 @@ private:
         }
         if (!gladLoadGL(eglProcAddress))
             throw Error("egl: cannot load the OpenGL functions (gladLoadGL failed)");
+        if (softwareOnly_) {
+            // The surfaceless platform renders on a GPU when it finds one: not what was asked.
+            const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+            const std::string name = renderer ? renderer : "unknown";
+            if (name.find("llvmpipe") == std::string::npos &&
+                name.find("softpipe") == std::string::npos) {
+                throw Error("egl-software: the " + platform_ + " display renders on " + name +
+                            ", not in software, and Mesa's software device is missing");
+            }
+        }
     }
 
     void release() {
@@ -184,12 +218,13 @@ private:
     EGLContext context_ = EGL_NO_CONTEXT;
     EGLSurface surface_ = EGL_NO_SURFACE;
     std::string platform_;
+    bool softwareOnly_ = false;
 };
 
 }  // namespace
 
-std::unique_ptr<Context> createEglContext(int width, int height) {
-    return std::make_unique<EglContext>(width, height);
+std::unique_ptr<Context> createEglContext(int width, int height, bool softwareOnly, bool debug) {
+    return std::make_unique<EglContext>(width, height, softwareOnly, debug);
 }
 
 }  // namespace pbr

@@ -86,7 +86,7 @@ private:
 }  // namespace
 
 std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, int height,
-                                           std::string& whyNot) {
+                                           bool debug, std::string& whyNot) {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) {
@@ -104,6 +104,7 @@ std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, 
 #ifdef __APPLE__
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
 #endif
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debug ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_SAMPLES, 0);
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);

@@ -56,7 +56,9 @@ void renderCubeFaces(Shader& shader, const TextureCube& target, int level) {
 TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size) {
     const SavedGlState saved;
     const int levels = int(std::floor(std::log2(double(size)))) + 1;
-    TextureCube cube(size, levels);
+    // The cube keeps the source's range: 32-bit floats for a sun past half-float range.
+    TextureCube cube(size, levels,
+                     equirectangular.internalFormat() == GL_RGB32F ? GL_RGB32F : GL_RGB16F);
     Shader shader("ibl/cubemap.vert", "ibl/equirect_to_cube.frag");
     shader.set("equirectangularMap", 0);
     equirectangular.bind(0);
@@ -68,7 +70,7 @@ TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size)
 
 TextureCube convolveIrradiance(const TextureCube& environment, int size, float sampleDelta) {
     const SavedGlState saved;
-    TextureCube irradiance(size, 1);
+    TextureCube irradiance(size, 1, environment.internalFormat());
     Shader shader("ibl/cubemap.vert", "ibl/irradiance.frag");
     readFrom(shader, environment);
     shader.set("sampleDelta", sampleDelta);
@@ -78,7 +80,7 @@ TextureCube convolveIrradiance(const TextureCube& environment, int size, float s
 
 TextureCube prefilterSpecular(const TextureCube& environment, int size, int levels, int samples) {
     const SavedGlState saved;
-    TextureCube prefiltered(size, levels);
+    TextureCube prefiltered(size, levels, environment.internalFormat());
     Shader shader("ibl/cubemap.vert", "ibl/prefilter.frag");
     readFrom(shader, environment);
     shader.set("sampleCount", samples);

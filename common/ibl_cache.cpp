@@ -17,7 +17,42 @@ namespace {
 constexpr const char* kKeyName = "pbr.cacheKey";
 // The C++ side of the maps (the HDR decoder, the face order, the sizes of the mip chain): the
 // shaders are hashed into every key, this is counted by hand. Raise it when that code changes.
-constexpr const char* kCodeVersion = "pbr ibl cache 3";
+constexpr const char* kCodeVersion = "pbr ibl cache 4";
+
+// The largest radiance the IBL maps carry. Their sums weight radiance by the GGX lobe (up to about
+// 1e4 at roughness 0.25) over thousands of samples; in 32-bit floats (up to 3.4e38) that leaves
+// room for 1e20, far above any real sky (a sun in absolute units is about 1.6e9).
+constexpr float kMaxRadiance = 1.0e20f;
+
+// The environment as the maps need it: values past kMaxRadiance lowered to it, and a line on
+// stderr for that, and for a range past half floats (the maps then go to 32-bit floats).
+HdrImage readEnvironment(const fs::path& path) {
+    HdrImage image = readHdr(path);
+    int clamped = 0;  // texels
+    for (size_t i = 0; i < image.pixels.size(); i += 3) {
+        bool any = false;
+        for (size_t c = i; c < i + 3; ++c) {
+            if (image.pixels[c] > kMaxRadiance) {
+                image.pixels[c] = kMaxRadiance;
+                any = true;
+            }
+        }
+        clamped += any ? 1 : 0;
+    }
+    if (clamped > 0) {
+        std::fprintf(stderr,
+                     "note: %s: %d texels above %g lowered to %g (more than the IBL sums can carry "
+                     "in 32-bit floats)\n",
+                     displayPath(path).c_str(), clamped, double(kMaxRadiance),
+                     double(kMaxRadiance));
+    } else if (!fitsHalfFloat(image)) {
+        std::fprintf(stderr,
+                     "note: %s: values up to %g, past half-float range (%g): its IBL maps are kept "
+                     "in 32-bit floats\n",
+                     displayPath(path).c_str(), double(maxValue(image)), double(kMaxHalfFloat));
+    }
+    return image;
+}
 
 // The shader code a map is made with, so that editing a shader makes its cached maps stale.
 std::string shaderCodeHash(const std::string& vertex, const std::string& fragment) {
@@ -181,7 +216,7 @@ MapFile IblEnvironment::prefilteredFile(int size, int levels, int samples) const
 const TextureCube& IblEnvironment::environmentMap() {
     if (!environment_) {
         environment_ = cache_.cube(environmentFile(), [&] {
-            return equirectangularToCubemap(Texture2D(readHdr(hdr_)), kEnvironmentSize);
+            return equirectangularToCubemap(Texture2D(readEnvironment(hdr_)), kEnvironmentSize);
         });
     }
     return *environment_;

@@ -218,6 +218,16 @@ HdrImage decodeHdr(std::string_view bytes, const std::string& name) {
     return image;
 }
 
+float maxValue(const HdrImage& image) {
+    float largest = 0.0f;
+    for (const float value : image.pixels) largest = std::max(largest, value);
+    return largest;
+}
+
+bool fitsHalfFloat(const HdrImage& image) {
+    return maxValue(image) <= kMaxHalfFloat;
+}
+
 HdrImage readHdr(const fs::path& path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) throw Error(displayPath(path) + ": no such file");

@@ -46,6 +46,13 @@ struct HdrImage {
         return {pixels[i], pixels[i + 1], pixels[i + 2]};
     }
 };
+// The largest half-float value, 65504: an HDR image fits a 16-bit float texture when no value is
+// larger.
+inline constexpr float kMaxHalfFloat = 65504.0f;
+bool fitsHalfFloat(const HdrImage& image);
+// The largest value of an HDR image (0 for an empty one).
+float maxValue(const HdrImage& image);
+
 // Reads a Radiance .hdr; throws Error("<path>: <reason>") for anything but a complete file
 // (missing, empty, not Radiance, an unsupported layout, a size out of range, bad run-length data,
 // truncated).

@@ -35,8 +35,9 @@ constexpr CommonFlag kCommonFlags[] = {
     {"--camera", "x,y,z[,yaw,pitch]",
      "camera start position, and yaw/pitch in degrees (default yaw -90, pitch 0)"},
     {"--benchmark", nullptr, "time the frames and print one JSON line of statistics"},
-    {"--backend", "osmesa|egl",
-     "offscreen backend (implies --headless; default: the first that works)"},
+    {"--backend", "osmesa|egl|egl-software",
+     "offscreen backend (implies --headless; default: the first that works of osmesa, egl); "
+     "egl may pick a GPU, egl-software never does"},
 };
 
 constexpr int kUsageWidth = 100;    // columns the help text is wrapped to
@@ -250,8 +251,8 @@ Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec
             }
             options.msaa = samples <= 1 ? 0 : samples;
         } else if (flag == "--backend") {
-            if (value != "osmesa" && value != "egl") {
-                fail("--backend: " + inQuotes(value) + " is not osmesa or egl");
+            if (value != "osmesa" && value != "egl" && value != "egl-software") {
+                fail("--backend: " + inQuotes(value) + " is not osmesa, egl or egl-software");
             }
             options.backend = value;
             options.headless = true;

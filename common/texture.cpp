@@ -54,11 +54,14 @@ Texture2D::Texture2D(const Image& source, ColorSpace colorSpace, TextureFilter f
     }
 }
 
-Texture2D::Texture2D(const HdrImage& image) : width_(image.width), height_(image.height) {
+Texture2D::Texture2D(const HdrImage& image)
+    : width_(image.width),
+      height_(image.height),
+      internalFormat_(fitsHalfFloat(image) ? GL_RGB16F : GL_RGB32F) {
     glBindTexture(GL_TEXTURE_2D, texture_.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, image.width, image.height, 0, GL_RGB, GL_FLOAT,
-                 image.pixels.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat_), image.width, image.height, 0, GL_RGB,
+                 GL_FLOAT, image.pixels.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);  // the seam at u = 0 / 1
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -66,7 +69,7 @@ Texture2D::Texture2D(const HdrImage& image) : width_(image.width), height_(image
 }
 
 Texture2D::Texture2D(int width, int height, GLenum internalFormat)
-    : width_(width), height_(height) {
+    : width_(width), height_(height), internalFormat_(internalFormat) {
     glBindTexture(GL_TEXTURE_2D, texture_.id());
     glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), width, height, 0, GL_RGBA, GL_FLOAT,
                  nullptr);
@@ -85,13 +88,14 @@ std::vector<float> Texture2D::readFloats(int channels) const {
     return texels;
 }
 
-TextureCube::TextureCube(int size, int levels) : size_(size), levels_(levels) {
+TextureCube::TextureCube(int size, int levels, GLenum internalFormat)
+    : size_(size), levels_(levels), internalFormat_(internalFormat) {
     glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
     for (int level = 0; level < levels; ++level) {
         const int s = std::max(1, size >> level);
         for (int face = 0; face < 6; ++face) {
-            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, GL_RGB16F, s, s, 0,
-                         GL_RGB, GL_FLOAT, nullptr);
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level,
+                         GLint(internalFormat), s, s, 0, GL_RGB, GL_FLOAT, nullptr);
         }
     }
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -119,6 +123,12 @@ std::vector<float> TextureCube::readFace(int face, int level) const {
 }
 
 namespace {
+std::vector<std::uint8_t> floatBytes(const std::vector<float>& values) {
+    std::vector<std::uint8_t> bytes(values.size() * sizeof(float));
+    std::memcpy(bytes.data(), values.data(), bytes.size());
+    return bytes;
+}
+
 std::vector<std::uint8_t> toHalfBytes(const std::vector<float>& values) {
     std::vector<std::uint8_t> bytes(values.size() * 2);
     for (size_t i = 0; i < values.size(); ++i) {
@@ -149,13 +159,7 @@ GlPixelFormat glPixelFormat(KtxFormat format) {
 KtxImage Texture2D::toKtx(KtxFormat format) const {
     KtxImage image{.format = format, .width = width_, .height = height_};
     std::vector<float> texels = readFloats(image.channels());
-    if (image.bytesPerChannel() == 2) {
-        image.images.push_back(toHalfBytes(texels));
-    } else {
-        std::vector<std::uint8_t> bytes(texels.size() * sizeof(float));
-        std::memcpy(bytes.data(), texels.data(), bytes.size());
-        image.images.push_back(std::move(bytes));
-    }
+    image.images.push_back(image.bytesPerChannel() == 2 ? toHalfBytes(texels) : floatBytes(texels));
     return image;
 }
 
@@ -170,7 +174,8 @@ Texture2D Texture2D::fromKtx(const KtxImage& image) {
 }
 
 KtxImage TextureCube::toKtx() const {
-    KtxImage image{.format = KtxFormat::RGBA16F,
+    const bool wide = internalFormat_ == GL_RGB32F;
+    KtxImage image{.format = wide ? KtxFormat::RGBA32F : KtxFormat::RGBA16F,
                    .width = size_,
                    .height = size_,
                    .faces = 6,
@@ -183,7 +188,7 @@ KtxImage TextureCube::toKtx() const {
             for (size_t i = 0; i < rgb.size(); i += 3) {
                 rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 1.0f});
             }
-            image.images.push_back(toHalfBytes(rgba));
+            image.images.push_back(wide ? floatBytes(rgba) : toHalfBytes(rgba));
         }
     }
     return image;
@@ -193,13 +198,12 @@ TextureCube TextureCube::fromKtx(const KtxImage& image) {
     if (image.faces != 6 || image.width != image.height) {
         throw Error("not a cube map of square faces");
     }
-    if (image.format != KtxFormat::RGB16F && image.format != KtxFormat::RGBA16F) {
-        throw Error("a cube map must be RGB16F or RGBA16F");
-    }
+    if (image.format == KtxFormat::RG16F) throw Error("a cube map must be RGB or RGBA");
     const int expectedLevels = int(std::floor(std::log2(double(image.width)))) + 1;
     if (image.levels > expectedLevels) throw Error("more mip levels than the size allows");
     const GlPixelFormat gl = glPixelFormat(image.format);
-    TextureCube cube(image.width, image.levels);
+    TextureCube cube(image.width, image.levels,
+                     image.format == KtxFormat::RGBA32F ? GL_RGB32F : GL_RGB16F);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (int level = 0; level < image.levels; ++level) {
         const int s = std::max(1, image.width >> level);

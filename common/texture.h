@@ -26,7 +26,8 @@ public:
     static Texture2D load(const std::filesystem::path& path, ColorSpace colorSpace,
                           TextureFilter filter = TextureFilter::Trilinear);
 
-    // A float RGB image (an HDR environment): RGB16F, linear filtering, no mipmaps, clamped.
+    // A float RGB image (an HDR environment): RGB16F while every value fits a half float
+    // (65504), else RGB32F; linear filtering, no mipmaps, clamped.
     explicit Texture2D(const HdrImage& image);
     // An empty render target texture of `internalFormat` (GL_RG16F, ...), linear, clamped.
     Texture2D(int width, int height, GLenum internalFormat);
@@ -41,31 +42,37 @@ public:
     int width() const { return width_; }
     int height() const { return height_; }
     GLuint id() const { return texture_.id(); }
+    GLenum internalFormat() const { return internalFormat_; }
 
 private:
     GlTexture texture_;
     int width_ = 0, height_ = 0;
+    GLenum internalFormat_ = GL_RGBA8;
 };
 
-// A cube map of float RGB faces (RGB16F), seamless filtering expected (the App turns it on).
-// Faces are rendered into by the IBL precomputation; `levels` mip levels are allocated.
+// A cube map of float RGB faces, seamless filtering expected (the App turns it on). Faces are
+// rendered into by the IBL precomputation; `levels` mip levels are allocated. GL_RGB16F holds
+// what an ordinary environment needs; GL_RGB32F one whose sun goes past half-float range.
 class TextureCube {
 public:
-    TextureCube(int size, int levels);
+    TextureCube(int size, int levels, GLenum internalFormat = GL_RGB16F);
     void bind(int unit) const;
     int size() const { return size_; }
     int levels() const { return levels_; }
     GLuint id() const { return texture_.id(); }
     // The texels of one face at one level, RGB floats, row 0 at the face's t = 0.
     std::vector<float> readFace(int face, int level) const;
-    // Every face and level as RGBA16F (alpha 1), and back (RGB16F or RGBA16F, square faces, a
-    // mip chain of halving sizes). fromKtx throws Error for anything else.
+    GLenum internalFormat() const { return internalFormat_; }
+    // Every face and level as RGBA16F (RGBA32F for a GL_RGB32F cube; alpha 1), and back (RGB16F,
+    // RGBA16F or RGBA32F, square faces, a mip chain of halving sizes). fromKtx throws Error for
+    // anything else.
     KtxImage toKtx() const;
     static TextureCube fromKtx(const KtxImage& image);
 
 private:
     GlTexture texture_;
     int size_, levels_;
+    GLenum internalFormat_;
 };
 
 // A PBR material folder: albedo, normal, metallic, roughness and optionally ao, under the names

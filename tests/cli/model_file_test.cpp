@@ -6,13 +6,12 @@
 #include <fstream>
 
 #include "support/golden.h"
+#include "support/test_data.h"
 
 namespace pbr::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path kGltf = "/usr/share/assimp/models/glTF2";
 
 struct Outcome {
     SampleRender render;
@@ -45,6 +44,7 @@ Outcome run(const fs::path& model, const fs::path& output) {
 }
 
 TEST(ModelFile, BrokenFilesFromAssimpsCorpus) {
+    PBR_NEED_ASSIMP_MODELS(kGltf);
     const fs::path dir = testOutputDir("model_broken_corpus");
     // file, and whether it must be refused (true) or may render (false: Assimp repairs it)
     const std::vector<std::pair<const char*, bool>> files = {
@@ -72,6 +72,7 @@ TEST(ModelFile, BrokenFilesFromAssimpsCorpus) {
 // Damaged copies of good files: each says what is wrong in words, never Assimp's "no suitable
 // reader", and never a decoder's code.
 TEST(ModelFile, DamagedCopies) {
+    PBR_NEED_ASSIMP_MODELS(kGltf);
     const fs::path dir = testOutputDir("model_damaged");
     const std::string glb = readBytes(kGltf / "BoxTextured-glTF-Binary/BoxTextured.glb");
     const std::string gltf = readBytes(kGltf / "BoxTextured-glTF/BoxTextured.gltf");
@@ -121,6 +122,7 @@ TEST(ModelFile, DamagedCopies) {
 // Files whose primitives name no material are drawn in glTF's default material (white): visible
 // on 03's grey background, and said on stderr.
 TEST(ModelFile, NoMaterialIsVisibleAndSaid) {
+    PBR_NEED_ASSIMP_MODELS(kGltf);
     const fs::path dir = testOutputDir("model_no_material");
     int index = 0;
     for (const char* file : {"IncorrectVertexArrays/Cube.gltf", "cameras/Cameras.gltf",

@@ -225,7 +225,7 @@ def check_golden_update(source, build):
     if not goldens:
         fail("no golden pictures found")
     for golden in goldens:
-        if not any(re.search(r"\.MatchesGolden/" + re.escape(golden) + r"_[a-z]+$", name)
+        if not any(re.search(r"\.MatchesGolden/" + re.escape(golden) + r"_[a-z_]+$", name)
                    for name in selected):
             fail(f"the golden-update command ({lines[0]}) runs no test that rewrites "
                  f"tests/golden/{golden}.png")

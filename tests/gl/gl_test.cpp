@@ -10,6 +10,7 @@
 
 #include "app.h"
 #include "brdf.h"
+#include "context.h"
 #include "error.h"
 #include "framebuffer.h"
 #include "ibl.h"
@@ -48,6 +49,44 @@ TEST(Gl, AGlErrorFailsTheRunAndIsNamed) {
         // With KHR_debug (llvmpipe has it) the driver's message names the call.
         if (GLAD_GL_KHR_debug) {
             EXPECT_NE(message.find("glEnable"), std::string::npos) << message;
+        }
+    }
+}
+
+// No GL error can vanish: with KHR_debug's messages muted, or debug output switched off, three
+// GL_INVALID_ENUMs still fail the run (glGetError is always asked), on every offscreen backend.
+// And where the platform can make a debug context (EGL), the App asks for one.
+TEST(Gl, ErrorsFailTheRunEvenWithDebugMessagesMuted) {
+    const fs::path dir = test::testOutputDir("gl_error_muted");
+    for (const std::string& backend : offscreenBackends()) {
+        for (const bool switchedOff : {false, true}) {
+            App app = makeApp(dir, {"--backend", backend});
+            ASSERT_TRUE(app.nextFrame());
+            if (backend.starts_with("egl")) {
+                GLint flags = 0;
+                glGetIntegerv(GL_CONTEXT_FLAGS, &flags);
+                EXPECT_TRUE(flags & GL_CONTEXT_FLAG_DEBUG_BIT)
+                    << backend << ": not a debug context";
+            }
+            if (GLAD_GL_KHR_debug) {
+                if (switchedOff)
+                    glDisable(GL_DEBUG_OUTPUT);
+                else
+                    glDebugMessageControl(GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, 0, nullptr,
+                                          GL_FALSE);
+            }
+            for (int i = 0; i < 3; ++i) glEnable(0x1234);  // not a capability: GL_INVALID_ENUM
+            try {
+                while (app.nextFrame()) {
+                }
+                ADD_FAILURE() << backend << (switchedOff ? ", debug output off" : ", muted")
+                              << ": the errors vanished and the run ended normally";
+            } catch (const Error& e) {
+                const std::string message = e.what();
+                EXPECT_NE(message.find("OpenGL error(s) during the run; first: GL_INVALID_ENUM"),
+                          std::string::npos)
+                    << backend << ": " << message;
+            }
         }
     }
 }

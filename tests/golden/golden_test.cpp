@@ -11,6 +11,8 @@
 #include "context.h"
 #include "paths.h"
 #include "support/golden.h"
+#include "support/golden_cases.h"
+#include "support/test_data.h"
 
 namespace pbr::test {
 namespace {
@@ -41,58 +43,14 @@ void expectNotBlank(const Image& image, double minShare) {
     EXPECT_GT(double(differing) / (double(image.width) * image.height), minShare);
 }
 
-// Every golden image, one case each: the golden's name (tests/golden/<golden>.png), the sample
-// and its arguments, how much of the picture must differ from its clear colour, and, for one
-// golden drawn from several inputs, the other inputs that must give the very same bytes. The
-// test of a case is named after its golden (MatchesGolden/<golden>_<backend>), so that a check
-// can tell which tests rewrite which goldens (see tests/docs/check_docs.py).
-struct GoldenCase {
-    std::string golden;
-    std::string sample;
-    std::vector<std::string> args{};
-    double minNonBlank = 0.0;
-    std::vector<std::vector<std::string>> sameBytesAs{};
-};
-
-const fs::path kAssimpGltf = "/usr/share/assimp/models/glTF2";
-
-std::vector<GoldenCase> goldenCases() {
-    std::vector<GoldenCase> cases = {
-        {"01_lighting", "01_lighting", {}, 0.15},  // 49 spheres cover about a quarter
-        {"02_lighting_textured", "02_lighting_textured", {}, 0.1},  // dark iron near the background
-        {"03_gltf_unlit", "03_gltf_unlit", {}, 0.05},
-        // BoxTextured as .gltf with a .bin and a .png beside it, as .glb, and with everything
-        // embedded in base64: one picture, one golden.
-        {"03_box_textured",
-         "03_gltf_unlit",
-         {"--model", (kAssimpGltf / "BoxTextured-glTF/BoxTextured.gltf").string(), "--size",
-          "480x270"},
-         0.1,
-         {{"--model", (kAssimpGltf / "BoxTextured-glTF-Binary/BoxTextured.glb").string(), "--size",
-           "480x270"},
-          {"--model", (kAssimpGltf / "BoxTextured-glTF-Embedded/BoxTextured.gltf").string(),
-           "--size", "480x270"}}},
-        {"04_ibl_irradiance", "04_ibl_irradiance"},
-        {"05_ibl_specular", "05_ibl_specular"},
-        {"05_ibl_specular_textured", "05_ibl_specular", {"--textured"}},
-        {"06_brdf_lut", "06_brdf_lut", {}, 0.3},
-    };
-    // The other four material sets, each on the tutorial's close-up view, at a small size.
-    for (const char* set : {"gold", "grass", "plastic", "wall"}) {
-        cases.push_back({std::string("02_") + set,
-                         "02_lighting_textured",
-                         {"--material-dir", (materialDir() / set).string(), "--size", "480x270",
-                          "--camera", "0,0,3"},
-                         0.3});
-    }
-    return cases;
-}
-
 // Each golden is checked on every offscreen backend this build has: they must draw the same.
 class GoldenImage : public ::testing::TestWithParam<std::tuple<GoldenCase, std::string>> {};
 
 TEST_P(GoldenImage, MatchesGolden) {
     const auto& [golden, backend] = GetParam();
+    if (golden.needsAssimpModels) {
+        PBR_NEED_ASSIMP_MODELS(models);
+    }
     const fs::path dir = testOutputDir("golden_" + golden.golden + "_" + backend);
     auto render = [&](std::vector<std::string> args, const std::string& file) {
         args.insert(args.end(), {"--backend", backend});
@@ -115,9 +73,10 @@ TEST_P(GoldenImage, MatchesGolden) {
 
 INSTANTIATE_TEST_SUITE_P(Backends, GoldenImage,
                          ::testing::Combine(::testing::ValuesIn(goldenCases()),
-                                            ::testing::ValuesIn(offscreenBackends())),
+                                            ::testing::ValuesIn(softwareBackends())),
                          [](const auto& info) {
-                             return std::get<0>(info.param).golden + "_" + std::get<1>(info.param);
+                             return std::get<0>(info.param).golden + "_" +
+                                    paramName(std::get<1>(info.param));
                          });
 
 // The table and the folder agree: every golden picture (with its .json) has a case, and every
@@ -135,7 +94,7 @@ TEST(Golden, EveryGoldenFileHasACase) {
 
 // On one machine the backends give the same pixels, bit for bit (both are llvmpipe here).
 TEST(Golden, BackendsGiveTheSamePixels) {
-    const std::vector<std::string> backends = offscreenBackends();
+    const std::vector<std::string> backends = softwareBackends();
     if (backends.size() < 2) GTEST_SKIP() << "this build has one offscreen backend";
     const fs::path dir = testOutputDir("golden_backends");
     std::string first;
@@ -177,7 +136,7 @@ TEST(Golden, GateRejectsSmallChanges) {
 // Files written by others render: not blank, no GL error.
 TEST(Golden, RealGltfFilesRender) {
     const fs::path dir = testOutputDir("golden_real_gltf");
-    const fs::path models = "/usr/share/assimp/models/glTF2";
+    PBR_NEED_ASSIMP_MODELS(models);
     for (const char* file :
          {"2CylinderEngine-glTF-Binary/2CylinderEngine.glb", "ClearCoat-glTF/ClearCoatTest.gltf",
           "BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf"}) {

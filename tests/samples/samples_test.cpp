@@ -40,7 +40,8 @@ INSTANTIATE_TEST_SUITE_P(All, EverySample,
                          ::testing::Combine(::testing::ValuesIn(sampleNames()),
                                             ::testing::ValuesIn(offscreenBackends())),
                          [](const auto& info) {
-                             return std::get<0>(info.param) + "_" + std::get<1>(info.param);
+                             return std::get<0>(info.param) + "_" +
+                                    paramName(std::get<1>(info.param));
                          });
 
 }  // namespace

@@ -35,6 +35,11 @@ fs::path testOutputDir(const std::string& name) {
     return dir;
 }
 
+std::string paramName(std::string name) {
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+}
+
 std::vector<std::string> folderEntries(const fs::path& dir) {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(dir)) names.push_back(entry.path().filename());

@@ -36,6 +36,9 @@ std::vector<std::string> folderEntries(const std::filesystem::path& dir);
 // A file's bytes ("" when it cannot be read).
 std::string readBytes(const std::filesystem::path& path);
 
+// A backend's name as a gtest parameter name ("egl-software" -> "egl_software").
+std::string paramName(std::string name);
+
 // The full path of a sample executable.
 std::filesystem::path sampleExecutable(const std::string& name);
 

@@ -2,6 +2,8 @@
 // accepted, each kind of damage is named with where it is.
 #include <gtest/gtest.h>
 
+#include "support/test_data.h"
+
 #include <cstdint>
 #include <fstream>
 #include <sstream>
@@ -18,17 +20,16 @@ std::string fileBytes(const std::string& path) {
     return bytes.str();
 }
 
-const std::string kGltf = "/usr/share/assimp/models/glTF2/";
-
 TEST(GltfFile, WellFormedJsonPasses) {
+    PBR_NEED_ASSIMP_MODELS(kGltf);
     for (const char* text : {"{}", " [1, -2.5e+3, 0.25, true, false, null, \"a\\u00e9\\n\"] ",
                              "{\"a\":{\"b\":[[]]}}", "\xEF\xBB\xBF{}", "0", "\"text\""}) {
         EXPECT_FALSE(jsonSyntaxError(text)) << text << ": " << *jsonSyntaxError(text);
     }
-    const std::string box = fileBytes(kGltf + "BoxTextured-glTF/BoxTextured.gltf");
+    const std::string box = fileBytes((kGltf / "BoxTextured-glTF/BoxTextured.gltf").string());
     ASSERT_FALSE(box.empty());
     EXPECT_FALSE(gltfContainerError(box));
-    const std::string glb = fileBytes(kGltf + "BoxTextured-glTF-Binary/BoxTextured.glb");
+    const std::string glb = fileBytes((kGltf / "BoxTextured-glTF-Binary/BoxTextured.glb").string());
     ASSERT_FALSE(glb.empty());
     EXPECT_FALSE(gltfContainerError(glb));
 }
@@ -59,7 +60,8 @@ TEST(GltfFile, DamageIsNamedWithItsPlace) {
 }
 
 TEST(GltfFile, GlbDamage) {
-    const std::string glb = fileBytes(kGltf + "BoxTextured-glTF-Binary/BoxTextured.glb");
+    PBR_NEED_ASSIMP_MODELS(kGltf);
+    const std::string glb = fileBytes((kGltf / "BoxTextured-glTF-Binary/BoxTextured.glb").string());
     ASSERT_GT(glb.size(), 1000u);
     EXPECT_EQ(*gltfContainerError(glb.substr(0, 1000)), "truncated: the GLB header says " +
                                                             std::to_string(glb.size()) +

@@ -1,0 +1,47 @@
+#include "support/golden_cases.h"
+
+#include <filesystem>
+
+#include "paths.h"
+
+namespace pbr::test {
+
+namespace {
+const std::filesystem::path kAssimpGltf = "/usr/share/assimp/models/glTF2";
+
+}  // namespace
+
+std::vector<GoldenCase> goldenCases() {
+    std::vector<GoldenCase> cases = {
+        {"01_lighting", "01_lighting", {}, 0.15},  // 49 spheres cover about a quarter
+        {"02_lighting_textured", "02_lighting_textured", {}, 0.1},  // dark iron near the background
+        {"03_gltf_unlit", "03_gltf_unlit", {}, 0.05},
+        // BoxTextured as .gltf with a .bin and a .png beside it, as .glb, and with everything
+        // embedded in base64: one picture, one golden.
+        {"03_box_textured",
+         "03_gltf_unlit",
+         {"--model", (kAssimpGltf / "BoxTextured-glTF/BoxTextured.gltf").string(), "--size",
+          "480x270"},
+         0.1,
+         {{"--model", (kAssimpGltf / "BoxTextured-glTF-Binary/BoxTextured.glb").string(), "--size",
+           "480x270"},
+          {"--model", (kAssimpGltf / "BoxTextured-glTF-Embedded/BoxTextured.gltf").string(),
+           "--size", "480x270"}},
+         true},
+        {"04_ibl_irradiance", "04_ibl_irradiance"},
+        {"05_ibl_specular", "05_ibl_specular"},
+        {"05_ibl_specular_textured", "05_ibl_specular", {"--textured"}},
+        {"06_brdf_lut", "06_brdf_lut", {}, 0.3},
+    };
+    // The other four material sets, each on the tutorial's close-up view, at a small size.
+    for (const char* set : {"gold", "grass", "plastic", "wall"}) {
+        cases.push_back({std::string("02_") + set,
+                         "02_lighting_textured",
+                         {"--material-dir", (materialDir() / set).string(), "--size", "480x270",
+                          "--camera", "0,0,3"},
+                         0.3});
+    }
+    return cases;
+}
+
+}  // namespace pbr::test
