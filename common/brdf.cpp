@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <vector>
 
 namespace pbr::cpu {
 
@@ -66,65 +67,129 @@ glm::vec3 reinhardGamma(const glm::vec3& color) {
 }
 
 namespace {
-// Hammersley point i of `samples`: (i / N, the radical inverse of i in base 2).
-glm::dvec2 hammersley(int i, int samples) {
-    std::uint32_t bits = std::uint32_t(i);
-    bits = (bits << 16u) | (bits >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return {double(i) / samples, double(bits) * 2.3283064365386963e-10};
+
+constexpr double kPi = std::numbers::pi;
+
+// An n-point Gauss-Legendre rule on [-1, 1]: nodes (Legendre roots, by Newton's method) and
+// weights.
+struct GaussLegendre {
+    std::vector<double> nodes, weights;
+    explicit GaussLegendre(int n) {
+        for (int i = 0; i < n; ++i) {
+            double x = std::cos(kPi * (i + 0.75) / (n + 0.5)), derivative = 0.0;
+            for (int iteration = 0; iteration < 100; ++iteration) {
+                double p0 = 1.0, p1 = x;
+                for (int k = 2; k <= n; ++k) {
+                    const double p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+                    p0 = p1;
+                    p1 = p2;
+                }
+                derivative = n * (x * p1 - p0) / (x * x - 1.0);
+                const double step = p1 / derivative;
+                x -= step;
+                if (std::abs(step) < 1e-15) break;
+            }
+            nodes.push_back(x);
+            weights.push_back(2.0 / ((1.0 - x * x) * derivative * derivative));
+        }
+    }
+};
+
+double ggxDistribution(double cosH, double alpha) {
+    const double a2 = alpha * alpha, d = (a2 - 1.0) * cosH * cosH + 1.0;
+    return a2 / (kPi * d * d);
 }
 
-glm::dvec3 fromSpherical(double cosTheta, double phi) {
-    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
+double charlieDistribution(double cosH, double alpha) {
+    const double sin2 = std::max(1.0 - cosH * cosH, 0.0);
+    return (2.0 + 1.0 / alpha) * std::pow(sin2, 0.5 / alpha) / (2.0 * kPi);
 }
+
+double smithSchlickIbl(double NdotV, double NdotL, double roughness) {
+    const double k = roughness * roughness / 2.0;
+    return (NdotV / (NdotV * (1.0 - k) + k)) * (NdotL / (NdotL * (1.0 - k) + k));
+}
+
+double ashikhmin(double NdotL, double NdotV) {
+    return std::clamp(1.0 / (4.0 * (NdotL + NdotV - NdotL * NdotV)), 0.0, 1.0);
+}
+
+// What the LUT integrates for one light direction, per unit solid angle of l: (scale, bias,
+// sheen). Zero below the horizon.
+glm::dvec3 lutIntegrand(const glm::dvec3& V, const glm::dvec3& L, double roughness) {
+    const double NdotL = L.z, NdotV = V.z;
+    if (NdotL <= 0.0) return glm::dvec3(0.0);
+    const glm::dvec3 H = glm::normalize(V + L);
+    const double VdotH = std::max(glm::dot(V, H), 0.0), alpha = roughness * roughness;
+    const double specular = ggxDistribution(H.z, alpha) * smithSchlickIbl(NdotV, NdotL, roughness) /
+                            (4.0 * NdotV);  // D G / (4 NdotL NdotV) times NdotL
+    const double Fc = std::pow(1.0 - VdotH, 5.0);
+    const double sheen = charlieDistribution(H.z, alpha) * ashikhmin(NdotL, NdotV) * NdotL;
+    return {specular * (1.0 - Fc), specular * Fc, sheen};
+}
+
+// The integral over half vectors of lutIntegrand times the Jacobian 4 (v.h) (l = reflect(-v, h)).
+// theta_h runs over panels graded geometrically towards 0 (the GGX lobe, width alpha) and towards
+// pi/2 (Charlie's, width sqrt(alpha)), 16 Gauss-Legendre nodes each; phi_h over [0, pi] by the
+// midpoint rule, doubled (v lies in the xz plane: the integrand is mirror-symmetric in phi).
+glm::dvec3 halfVectorQuadrature(double NdotV, double roughness) {
+    static const GaussLegendre rule(16);
+    constexpr int kPhi = 256;
+    const double alpha = std::max(roughness * roughness, 1e-8), halfPi = kPi / 2.0;
+    std::vector<double> edges = {0.0, halfPi};
+    for (double d = alpha / 64.0; d < halfPi; d *= 2.0) edges.push_back(d);
+    for (double d = std::sqrt(alpha) / 64.0; d < halfPi; d *= 2.0) edges.push_back(halfPi - d);
+    for (int i = 1; i < 32; ++i) edges.push_back(halfPi * i / 32.0);
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+
+    const glm::dvec3 V(std::sqrt(std::max(0.0, 1.0 - NdotV * NdotV)), 0.0, NdotV);
+    glm::dvec3 sum(0.0);
+    for (size_t p = 0; p + 1 < edges.size(); ++p) {
+        const double lo = edges[p], hi = edges[p + 1], half = (hi - lo) / 2.0;
+        for (size_t n = 0; n < rule.nodes.size(); ++n) {
+            const double theta = lo + half * (rule.nodes[n] + 1.0);
+            const double weightTheta = half * rule.weights[n] * std::sin(theta);
+            glm::dvec3 ring(0.0);
+            for (int k = 0; k < kPhi; ++k) {
+                const double phi = kPi * (k + 0.5) / kPhi;
+                const glm::dvec3 H(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                                   std::cos(theta));
+                const double VdotH = glm::dot(V, H);
+                if (VdotH <= 0.0) continue;
+                const glm::dvec3 L = 2.0 * VdotH * H - V;
+                ring += lutIntegrand(V, L, roughness) * (4.0 * VdotH);
+            }
+            sum += ring * (weightTheta * 2.0 * kPi / kPhi);
+        }
+    }
+    return sum;
+}
+
 }  // namespace
 
-glm::dvec2 integrateBrdf(double NdotV, double roughness, int samples) {
-    const glm::dvec3 V(std::sqrt(1.0 - NdotV * NdotV), 0.0, NdotV);
-    const double a = roughness * roughness, k = roughness * roughness / 2.0;
-    glm::dvec2 sum(0.0);
-    for (int i = 0; i < samples; ++i) {
-        const glm::dvec2 Xi = hammersley(i, samples);
-        const double cosTheta = std::sqrt((1.0 - Xi.y) / (1.0 + (a * a - 1.0) * Xi.y));
-        const glm::dvec3 H = fromSpherical(cosTheta, 2.0 * std::numbers::pi * Xi.x);
-        const glm::dvec3 L = glm::normalize(2.0 * glm::dot(V, H) * H - V);
-        const double NdotL = std::max(L.z, 0.0), NdotH = std::max(H.z, 0.0);
-        const double VdotH = std::max(glm::dot(V, H), 0.0);
-        if (NdotL <= 0.0) continue;
-        const double G = (NdotV / (NdotV * (1.0 - k) + k)) * (NdotL / (NdotL * (1.0 - k) + k));
-        const double visibility = G * VdotH / (NdotH * NdotV);
-        const double Fc = std::pow(1.0 - VdotH, 5.0);
-        sum += glm::dvec2((1.0 - Fc) * visibility, Fc * visibility);
-    }
-    return sum / double(samples);
+glm::dvec2 splitSumQuadrature(double NdotV, double roughness) {
+    return glm::dvec2(halfVectorQuadrature(NdotV, roughness));
 }
 
-double integrateSheen(double NdotV, double roughness, int samples) {
-    const glm::dvec3 V(std::sqrt(1.0 - NdotV * NdotV), 0.0, NdotV);
-    const double alpha = roughness * roughness;
-    const double invR = 1.0 / std::max(roughness, 0.000001);
-    double sum = 0.0;
-    for (int i = 0; i < samples; ++i) {
-        const glm::dvec2 Xi = hammersley(i, samples);
-        const double sinTheta = std::pow(Xi.y, alpha / (2.0 * alpha + 1.0));
-        const glm::dvec3 H = fromSpherical(std::sqrt(std::max(0.0, 1.0 - sinTheta * sinTheta)),
-                                           2.0 * std::numbers::pi * Xi.x);
-        const glm::dvec3 L = 2.0 * glm::dot(V, H) * H - V;
-        const double NdotL = std::max(L.z, 0.0), NdotH = std::max(H.z, 0.0);
-        const double VdotH = std::max(glm::dot(V, H), 0.0);
-        if (NdotL <= 0.0) continue;
-        const double visibility =
-            std::clamp(1.0 / (4.0 * (NdotL + NdotV - NdotL * NdotV)), 0.0, 1.0);  // Ashikhmin
-        const double charlie = (2.0 + invR) *
-                               std::pow(std::max(1.0 - NdotH * NdotH, 0.0), invR * 0.5) /
-                               (2.0 * std::numbers::pi);
-        sum += visibility * charlie * NdotL * VdotH;
+double sheenQuadrature(double NdotV, double roughness) {
+    return halfVectorQuadrature(NdotV, roughness).z;
+}
+
+glm::dvec3 bruteForceLut(double NdotV, double roughness, int steps) {
+    const glm::dvec3 V(std::sqrt(std::max(0.0, 1.0 - NdotV * NdotV)), 0.0, NdotV);
+    const double dTheta = (kPi / 2.0) / steps, dPhi = 2.0 * kPi / (4 * steps);
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < steps; ++i) {
+        const double theta = (i + 0.5) * dTheta;
+        for (int k = 0; k < 4 * steps; ++k) {
+            const double phi = (k + 0.5) * dPhi;
+            const glm::dvec3 L(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
+                               std::cos(theta));
+            sum += lutIntegrand(V, L, roughness) * (std::sin(theta) * dTheta * dPhi);
+        }
     }
-    return sum / double(samples);
+    return sum;
 }
 
 }  // namespace pbr::cpu

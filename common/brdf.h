@@ -31,13 +31,23 @@ struct SurfacePoint {
 glm::vec3 shadePointLights(const SurfacePoint& surface, const glm::vec3& cameraPosition,
                            std::span<const PointLight> lights);
 
-// The split-sum BRDF integral for image-based lighting: the scale (x) and bias (y) to F0 of
-// the GGX specular lobe at NdotV and roughness (k = roughness^2 / 2), by importance sampling
-// with `samples` Hammersley points, in double precision.
-glm::dvec2 integrateBrdf(double NdotV, double roughness, int samples);
-// The Charlie sheen term of the cookbook's LUT (its B channel): Charlie importance sampling,
-// sum of V_Ashikhmin * D_Charlie * NdotL * VdotH over the samples, divided by their count.
-double integrateSheen(double NdotV, double roughness, int samples);
+// Reference values of the BRDF LUT by deterministic numerical quadrature, not sampling: the
+// integrand is summed over half vectors h with Gauss-Legendre rules on panels of theta_h graded
+// towards where each lobe concentrates (around the normal for GGX, at the horizon for Charlie),
+// and the midpoint rule in phi_h; light direction l = reflect(-v, h), dl = 4 (v.h) dh. Double
+// precision. Independent of the shaders' importance sampling, so it can judge them.
+//
+// The split-sum integral of the GGX specular lobe (Karis): the scale (x) and bias (y) to F0,
+//   x = integral of D G (1 - Fc) / (4 NdotL NdotV) NdotL dl,   y = the same with Fc,
+// Fc = (1 - VdotH)^5, D = GGX with alpha = roughness^2, G = Smith-Schlick with k = roughness^2 / 2.
+glm::dvec2 splitSumQuadrature(double NdotV, double roughness);
+// The directional albedo of Charlie sheen (Estevez and Kulla; Ashikhmin's visibility), what the
+// LUT's B channel holds: integral of D_Charlie(alpha = roughness^2) V_Ashikhmin NdotL dl.
+double sheenQuadrature(double NdotV, double roughness);
+// The same sums over light directions directly, on a uniform grid of `steps` x 4 `steps`
+// midpoints in (theta_l, phi_l): slow, and fit only for wide lobes (roughness >= 0.4); kept as
+// a check of the half-vector quadrature itself.
+glm::dvec3 bruteForceLut(double NdotV, double roughness, int steps);
 
 // Reinhard c / (c + 1), then gamma 1/2.2: what the direct-light samples write.
 glm::vec3 reinhardGamma(const glm::vec3& color);

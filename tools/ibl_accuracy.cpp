@@ -43,7 +43,7 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kEnvironmentSize = 512;
 constexpr int kIrradianceSize = 32;
 constexpr int kPrefilterSize = 128, kPrefilterLevels = 5, kPrefilterSamples = 1024;
-constexpr int kLutSize = 512, kLutSamples = 1024, kLutReferenceSamples = 65536;
+constexpr int kLutSize = 512, kLutSamples = 1024;
 constexpr double kLearnOpenGlDelta = 0.025;
 
 // ---------------------------------------------------------------------------------------------
@@ -481,8 +481,7 @@ void measureBrdfLut(Report& report) {
         const int i = int(k % kPerAxis) * kBlock + kBlock / 2;
         const int j = int(k / kPerAxis) * kBlock + kBlock / 2;
         const double NdotV = (i + 0.5) / kLutSize, roughness = (j + 0.5) / kLutSize;
-        const glm::dvec2 reference =
-            pbr::cpu::integrateBrdf(NdotV, roughness, kLutReferenceSamples);
+        const glm::dvec2 reference = pbr::cpu::splitSumQuadrature(NdotV, roughness);
         const size_t at = (size_t(j) * kLutSize + size_t(i)) * 2;
         scaleErrors[k] = std::abs(double(texels[at]) - reference.x);
         biasErrors[k] = std::abs(double(texels[at + 1]) - reference.y);
@@ -512,13 +511,12 @@ void printReport(const Report& report, const std::string& environment, const std
         "- prefiltered L0 (roughness 0): (a) the environment's mip level 2 texel (box average "
         "over the 128^2 texel's footprint), (b) a bilinear read of level 0 at the texel centre; "
         "96 texels.\n"
-        "- BRDF LUT: pbr::cpu::integrateBrdf with %d Hammersley points at 16 x 16 texels; "
-        "absolute error.\n"
+        "- BRDF LUT: pbr::cpu::splitSumQuadrature (numerical quadrature, no sampling) at 16 x 16 "
+        "texels; absolute error.\n"
         "GPU time: the call, glFinish included (the prefiltered row times all 5 levels).\n"
         "The references summed over level 0 instead (4 times the texels) differ by at most "
         "%.4f %% (irradiance) and %.4f %% (prefiltered L1-L4).\n\n",
-        report.irradianceTexels, kLutReferenceSamples, 100.0 * report.irradianceCheck,
-        100.0 * report.prefilterCheck);
+        report.irradianceTexels, 100.0 * report.irradianceCheck, 100.0 * report.prefilterCheck);
     printTable(report.rows);
     std::printf(
         "\nTimings: environment cube %.2f s (GPU); CPU references (each checked over level 0 "

@@ -24,6 +24,10 @@ int main(int argc, char** argv) try {
     std::vector<pbr::FlagSpec> flags = pbr::iblFlags();
     flags.push_back(
         pbr::FlagSpec::toggle("--textured", "five spheres in the project's material sets"));
+    flags.push_back(pbr::FlagSpec::choice(
+        "--split-sum", {"text", "exact"},
+        "the ambient term: the text's (F times the LUT's scale; default) or the split sum as its "
+        "derivation has it (F0 times the scale, diffuse weighted by what the lobe leaves)"));
     pbr::App app(argc, argv,
                  {.name = "05_ibl_specular",
                   .title = "05 IBL: specular",
@@ -61,6 +65,7 @@ int main(int argc, char** argv) try {
         shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
         shader.set("ao", 1.0f);
     }
+    shader.set("exactSplitSum", app.flagChoice("--split-sum") == "exact" ? 1 : 0);
     pbr::setPointLights(shader, pbr::kGridLightPositions, glm::vec3(300.0f));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
     const pbr::SphereGrid row{.nrRows = 1, .nrColumns = 5, .spacing = 2.5f, .z = -2.0f};

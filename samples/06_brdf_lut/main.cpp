@@ -16,7 +16,7 @@ int main(int argc, char** argv) try {
     pbr::App app(
         argc, argv,
         {.name = "06_brdf_lut",
-         .title = "06 BRDF LUT: GGX scale and bias (left), Charlie sheen x 8 (right)",
+         .title = "06 BRDF LUT: GGX scale and bias (left), Charlie sheen (right)",
          .flags = {
              pbr::FlagSpec::text("--hdr", "FILE",
                                  "also bake this environment's irradiance and prefiltered maps"),
@@ -50,7 +50,6 @@ int main(int argc, char** argv) try {
 
     pbr::Shader& shader = app.shader("ibl/fullscreen.vert", "06_brdf_lut/show_lut.frag");
     shader.set("brdfLUT", 0);
-    shader.set("sheenScale", 8.0f);
     const pbr::GpuMesh quad(pbr::quad());
 
     glDisable(GL_DEPTH_TEST);

@@ -1,10 +1,11 @@
 #version 330 core
 // The BRDF lookup table. For NdotV along x and roughness along y (texel centres):
 // R, G = scale and bias to F0 of the split-sum GGX specular integral (Karis, "Real Shading in
-// Unreal Engine 4"), by GGX importance sampling; B (when `sheen` is on) = the Charlie sheen
-// integral of the cookbook's "precompute BRDF LUT" recipe (Charlie distribution, Ashikhmin
-// visibility, as in Filament), by Charlie importance sampling and the cookbook's estimator.
-// Mirrored on the CPU by pbr::cpu::integrateBrdf and pbr::cpu::integrateSheen.
+// Unreal Engine 4"), by GGX importance sampling; B (when `sheen` is on) = the directional albedo
+// of Charlie sheen (Estevez and Kulla's distribution with alpha = roughness^2, Ashikhmin's
+// visibility), the term of the cookbook's "precompute BRDF LUT" recipe, by Charlie importance
+// sampling divided by its density (the cookbook's estimator leaves the density out). Checked
+// against a numerical quadrature on the CPU (pbr::cpu::splitSumQuadrature, sheenQuadrature).
 out vec4 FragColor;
 in vec2 TexCoords;
 
@@ -51,15 +52,8 @@ float V_Ashikhmin(float NdotL, float NdotV)
     return clamp(1.0 / (4.0 * (NdotL + NdotV - NdotL * NdotV)), 0.0, 1.0);
 }
 
-// The "Charlie" sheen distribution (Estevez and Kulla), sheenRoughness in (0, 1].
-float D_Charlie(float sheenRoughness, float NdotH)
-{
-    float invR = 1.0 / max(sheenRoughness, 0.000001);
-    float sin2h = max(1.0 - NdotH * NdotH, 0.0);
-    return (2.0 + invR) * pow(sin2h, invR * 0.5) / (2.0 * PI);
-}
-
-// A half vector around +Z from the Charlie distribution of `roughness` (alpha = roughness^2).
+// A half vector around +Z from the "Charlie" sheen distribution (Estevez and Kulla) of alpha =
+// roughness^2, D(h) = (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi): its density is D(H) NdotH.
 vec3 importanceSampleCharlie(vec2 Xi, float roughness)
 {
     float alpha = roughness * roughness;
@@ -69,6 +63,9 @@ vec3 importanceSampleCharlie(vec2 Xi, float roughness)
     return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
 }
 
+// The sheen's directional albedo, the integral of D V NdotL over light directions. A sample's
+// light direction has density D NdotH / (4 VdotH); D divides out of the estimate, leaving
+// V NdotL 4 VdotH / NdotH.
 float integrateSheen(float NdotV, float roughness)
 {
     vec3 V = vec3(sqrt(1.0 - NdotV * NdotV), 0.0, NdotV);
@@ -78,11 +75,11 @@ float integrateSheen(float NdotV, float roughness)
     {
         vec3 H = importanceSampleCharlie(hammersley(i, count), roughness);
         vec3 L = 2.0 * dot(V, H) * H - V;
-        float NdotL = max(L.z, 0.0);
-        float NdotH = max(H.z, 0.0);
-        float VdotH = max(dot(V, H), 0.0);
-        if (NdotL > 0.0)
-            sum += V_Ashikhmin(NdotL, NdotV) * D_Charlie(roughness, NdotH) * NdotL * VdotH;
+        float NdotL = L.z;
+        float NdotH = H.z;
+        float VdotH = dot(V, H);
+        if (NdotL > 0.0 && NdotH > 0.0)
+            sum += V_Ashikhmin(NdotL, NdotV) * NdotL * 4.0 * VdotH / NdotH;
     }
     return sum / float(count);
 }

@@ -1,6 +1,21 @@
-// The ambient light of the split-sum IBL (LearnOpenGL PBR / IBL / Specular IBL): the diffuse
-// part from the irradiance map, the specular part from the prefiltered environment at the
-// roughness's mip level times the BRDF LUT's scale and bias to F0. Needs brdf.glsl first.
+// The ambient light of the split-sum IBL (Karis, "Real Shading in Unreal Engine 4"; LearnOpenGL
+// PBR / IBL / Specular IBL): the diffuse part from the irradiance map, the specular part from the
+// prefiltered environment at the roughness's mip level times the BRDF LUT's scale and bias to
+// F0. Two forms, chosen by `exactSplitSum`:
+//
+//   the text's (LearnOpenGL, kept so that 04 and 05 teach it and match its pictures):
+//     F = fresnelSchlickRoughness(NdotV, F0, roughness); kD = (1 - F) (1 - metallic)
+//     ambient = kD irradiance albedo + prefiltered (F scale + bias)
+//   the split sum as its derivation has it (the form the glTF samples use):
+//     E = F0 scale + bias    (the specular lobe's directional albedo)
+//     ambient = (1 - metallic) albedo irradiance (1 - E_dielectric) + prefiltered E
+//
+// The LUT's scale already integrates Fresnel over the lobe (the factor 1 - (1 - VdotH)^5 inside
+// it): multiplying it by a Fresnel term of the view angle again, as the text does, counts Fresnel
+// twice, and the diffuse weight 1 - F does not give back what that specular takes. In a white
+// furnace (environment 1, albedo 1) a smooth dielectric comes out up to 1.24 towards its rim
+// with the text's form, where the exact form gives 1 everywhere: light not reflected by the
+// specular lobe (1 - E) is what reaches the diffuse layer. Needs brdf.glsl first.
 
 uniform samplerCube irradianceMap;  // irradiance / pi of the environment
 uniform samplerCube prefilterMap;   // mip m: the environment prefiltered for roughness m / maxLod
@@ -8,22 +23,29 @@ uniform sampler2D brdfLUT;          // x = NdotV, y = roughness: (scale, bias) t
 // The prefiltered map's last mip level (the text's MAX_REFLECTION_LOD, 4 for five levels), set
 // from the map itself by pbr::useIblMaps, never by hand.
 uniform float prefilterMaxLod;
+uniform bool exactSplitSum;  // false: the text's form (04, 05 by default); true: the exact one
 
 vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, float ao)
 {
     float NdotV = max(dot(N, V), 0.0);
     vec3 R = reflect(-V, N);
     vec3 F0 = mix(vec3(0.04), albedo, metallic);
+    vec3 irradiance = texture(irradianceMap, N).rgb;
+    vec3 prefilteredColor = textureLod(prefilterMap, R, roughness * prefilterMaxLod).rgb;
+    vec2 envBRDF = texture(brdfLUT, vec2(NdotV, roughness)).rg;
+
+    if (exactSplitSum)
+    {
+        // glTF's mix of a dielectric (F0 0.04 over a diffuse base) and a metal (F0 = albedo).
+        float dielectricE = 0.04 * envBRDF.x + envBRDF.y;
+        vec3 E = F0 * envBRDF.x + envBRDF.y;
+        vec3 diffuse = (1.0 - metallic) * albedo * irradiance * (1.0 - dielectricE);
+        return (diffuse + prefilteredColor * E) * ao;
+    }
     vec3 F = fresnelSchlickRoughness(NdotV, F0, roughness);
     vec3 kS = F;
     vec3 kD = (1.0 - kS) * (1.0 - metallic);
-
-    vec3 irradiance = texture(irradianceMap, N).rgb;
     vec3 diffuse = irradiance * albedo;
-
-    vec3 prefilteredColor = textureLod(prefilterMap, R, roughness * prefilterMaxLod).rgb;
-    vec2 envBRDF = texture(brdfLUT, vec2(NdotV, roughness)).rg;
     vec3 specular = prefilteredColor * (F * envBRDF.x + envBRDF.y);
-
     return (kD * diffuse + specular) * ao;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -16,7 +17,10 @@
 #include "ibl.h"
 #include "mesh.h"
 #include "model.h"
+#include "output.h"
 #include "paths.h"
+#include "sphere_grid.h"
+#include "support/mesh_hit.h"
 #include "support/process.h"
 #include "texture.h"
 
@@ -202,11 +206,11 @@ TEST(Gl, IrradianceOfKnownEnvironments) {
     }
 }
 
-// The BRDF LUT (1024 Hammersley samples on the GPU) against a double-precision CPU integration of
-// the same integral with 16,384 samples, at 64 texels spread over the table; texel (x, y) must hold
-// NdotV = (x + 0.5) / N and roughness = (y + 0.5) / N, the orientation the renderer reads.
-// The B channel (the cookbook's Charlie sheen estimator, values up to about 0.1) likewise, within
-// 0.002.
+// The BRDF LUT (1024 Hammersley samples on the GPU) against the CPU's numerical quadrature of the
+// same integrals (pbr::cpu::splitSumQuadrature, sheenQuadrature: no sampling), at 64 texels spread
+// over the table; texel (x, y) must hold NdotV = (x + 0.5) / N and roughness = (y + 0.5) / N, the
+// orientation the renderer reads. All three channels within 0.01 (the estimates' noise at 1024
+// samples, and half floats).
 TEST(Gl, BrdfLutMatchesACpuIntegration) {
     const fs::path dir = test::testOutputDir("gl_brdf_lut");
     App app = makeApp(dir);
@@ -217,8 +221,8 @@ TEST(Gl, BrdfLutMatchesACpuIntegration) {
     for (int y = 3; y < kSize; y += 8) {
         for (int x = 3; x < kSize; x += 8) {
             const double NdotV = (x + 0.5) / kSize, roughness = (y + 0.5) / kSize;
-            const glm::dvec2 cpu = cpu::integrateBrdf(NdotV, roughness, 16384);
-            const double sheen = cpu::integrateSheen(NdotV, roughness, 16384);
+            const glm::dvec2 cpu = cpu::splitSumQuadrature(NdotV, roughness);
+            const double sheen = cpu::sheenQuadrature(NdotV, roughness);
             const size_t i = (size_t(y) * kSize + size_t(x)) * 4;
             worst = std::max({worst, std::abs(texels[i] - cpu.x), std::abs(texels[i + 1] - cpu.y)});
             worstSheen = std::max(worstSheen, std::abs(texels[i + 2] - sheen));
@@ -227,15 +231,15 @@ TEST(Gl, BrdfLutMatchesACpuIntegration) {
                 << "scale at NdotV " << NdotV << ", roughness " << roughness;
             EXPECT_NEAR(texels[i + 1], cpu.y, 0.01)
                 << "bias at NdotV " << NdotV << ", roughness " << roughness;
-            EXPECT_NEAR(texels[i + 2], sheen, 0.002)
+            EXPECT_NEAR(texels[i + 2], sheen, 0.01)
                 << "sheen at NdotV " << NdotV << ", roughness " << roughness;
         }
     }
     std::printf(
-        "BRDF LUT: worst difference from the 16k-sample CPU integral %.5f (R, G), "
+        "BRDF LUT: worst difference from the CPU quadrature %.5f (R, G), "
         "%.5f (B, largest value %.4f)\n",
         worst, worstSheen, largestSheen);
-    EXPECT_GT(largestSheen, 0.02);  // the comparison above is not between two zeros
+    EXPECT_GT(largestSheen, 0.3);  // the comparison above is not between two zeros
     // smooth and head-on: almost all of F0 comes back (scale near 1, bias near 0)
     const size_t corner = (size_t(0) * kSize + size_t(kSize - 1)) * 4;
     EXPECT_GT(texels[corner], 0.9f);
@@ -276,20 +280,22 @@ TEST(Gl, PrefilteredLevelZeroIsTheSource) {
 }
 
 // White furnace, through sample 05's own shader and IBL maps: an environment of radiance 1 all
-// round and white spheres (albedo 1, ao 1, no point lights). A lossless surface would come out 1
-// everywhere. The split-sum GGX is single-scattering: it drops the light that bounces between
-// microfacets more than once, nothing for a mirror and more and more with roughness and towards
-// grazing angles (measured here: a white metal of roughness 1 keeps 31-54 %, 37 % on average).
-// The expected value is derived per pixel from a 16k-sample CPU integration of that same
-// single-scattering integral (A, B at the pixel's NdotV and roughness), not assumed:
-//   metallic 1: F = fresnelSchlickRoughness(NdotV, F0 = 1) = 1, so L = A + B = E(NdotV, roughness),
-//               the directional albedo of single-scattering GGX;
-//   metallic 0: F0 = 0.04, L = (1 - F) + F * A + B (which exceeds 1 towards the rim of smooth
-//               spheres, up to 1.24: the text's kD = 1 - F does not conserve energy there).
-// The band each pixel must lie in: that value +- 0.02 (the LUT is 16-bit at 256^2 texels and
-// 1024 samples, the irradiance within 1 %). The spheres are drawn into a float target and the
-// tone map is undone exactly. Pixels whose NdotV is below 0.15 are left out: there the 64 x 64
-// sphere's interpolated normals part from the CPU's exact sphere.
+// round and white spheres (albedo 1, ao 1, no point lights), drawn with both forms of the ambient
+// term (shaders/include/ibl_ambient.glsl). A lossless surface would come out 1 everywhere. The
+// expected values come from the CPU's numerical quadrature of the single-scattering GGX lobe
+// (pbr::cpu::splitSumQuadrature: scale A and bias B at the pixel's NdotV and roughness), never
+// from the shader's formula:
+//   white metal, either form: A + B, the lobe's directional albedo (it loses light that bounces
+//     between microfacets more than once: nothing for a mirror, more with roughness);
+//   white dielectric, the exact form: 1 (the light the lobe does not reflect, 1 - (0.04 A + B),
+//     is what the diffuse layer takes) - the form the glTF samples use, never above 1;
+//   white dielectric, the text's form: it multiplies the scale by a Fresnel term of the view
+//     angle although the scale has Fresnel inside, and gains energy towards the rim of smooth
+//     spheres: the README's figure, 1.24 at roughness 0, is held here.
+// Each band: the expected value +- 0.02 (the LUT is 16-bit at 256^2 texels and 1024 samples,
+// the irradiance within 1 %). Spheres go to a float target and the tone map is undone exactly.
+// Pixels whose NdotV is below 0.15 are left out: there the 64 x 64 sphere's interpolated normals
+// part from the CPU's exact sphere.
 TEST(Gl, WhiteFurnace) {
     const fs::path dir = test::testOutputDir("gl_furnace");
     App app = makeApp(dir);
@@ -319,12 +325,9 @@ TEST(Gl, WhiteFurnace) {
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
     requireCompleteFramebuffer("furnace target");
     glViewport(0, 0, kWidth, kHeight);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
 
     Shader& shader = app.shader("common/pbr.vert", "05_ibl_specular/pbr.frag");
-    shader.use();
     shader.set("projection",
                glm::perspective(float(kFovY), float(kWidth) / float(kHeight), 0.1f, 100.0f));
     shader.set("view", glm::lookAt(glm::vec3(camera), glm::vec3(0.0f), glm::vec3(0, 1, 0)));
@@ -334,25 +337,32 @@ TEST(Gl, WhiteFurnace) {
     shader.set("lightCount", 0);
     useIblMaps(shader, irradiance, prefiltered, lut, 0);
     const GpuMesh sphere(uvSphere(64, 64));
-    for (int metallic = 0; metallic < 2; ++metallic) {
-        for (int col = 0; col < kColumns; ++col) {
-            shader.set("metallic", float(metallic));
-            shader.set("roughness", float(roughnessOf(col)));
-            shader.setModel(glm::translate(glm::mat4(1.0f), glm::vec3(centre(metallic, col))));
-            sphere.draw();
+    auto render = [&](bool exact) {
+        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        shader.set("exactSplitSum", exact ? 1 : 0);
+        for (int metallic = 0; metallic < 2; ++metallic) {
+            for (int col = 0; col < kColumns; ++col) {
+                shader.set("metallic", float(metallic));
+                shader.set("roughness", float(roughnessOf(col)));
+                shader.setModel(glm::translate(glm::mat4(1.0f), glm::vec3(centre(metallic, col))));
+                sphere.draw();
+            }
         }
-    }
-    std::vector<float> pixels(size_t(kWidth) * kHeight * 4);
-    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, pixels.data());
+        std::vector<float> pixels(size_t(kWidth) * kHeight * 4);
+        glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_FLOAT, pixels.data());
+        return pixels;
+    };
+    const std::vector<float> textForm = render(false), exactForm = render(true);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
-    // A (NdotV) table of the CPU integral per roughness, 16k samples, read linearly.
-    constexpr int kTable = 128;
+    // An (NdotV) table of the quadrature per roughness, read linearly.
+    constexpr int kTable = 32;
     std::vector<std::vector<glm::dvec2>> table(kColumns);
     for (int col = 0; col < kColumns; ++col) {
         for (int i = 0; i <= kTable; ++i) {
             table[size_t(col)].push_back(
-                cpu::integrateBrdf(std::max(double(i) / kTable, 1e-4), roughnessOf(col), 16384));
+                cpu::splitSumQuadrature(std::max(double(i) / kTable, 1e-4), roughnessOf(col)));
         }
     }
     auto scaleBias = [&](int col, double NdotV) {
@@ -363,10 +373,17 @@ TEST(Gl, WhiteFurnace) {
 
     // Each pixel's ray against every sphere (the nearest hit wins: a neighbour can hide a rim).
     struct Stats {
-        double lowest = 1e9, highest = -1e9, lowestExpected = 1e9, sum = 0.0;
+        double lowest = 1e9, highest = -1e9, sum = 0.0;
         int count = 0, outside = 0;
+        void add(double value, double expected) {
+            if (std::abs(value - expected) > 0.02) ++outside;
+            lowest = std::min(lowest, value);
+            highest = std::max(highest, value);
+            sum += value;
+            ++count;
+        }
     };
-    std::array<Stats, 2 * kColumns> stats{};
+    std::array<Stats, 2 * kColumns> text{}, exact{};
     const double tanHalf = std::tan(kFovY / 2.0), aspect = double(kWidth) / kHeight;
     for (int py = 0; py < kHeight; ++py) {
         for (int px = 0; px < kWidth; ++px) {
@@ -390,42 +407,229 @@ TEST(Gl, WhiteFurnace) {
             const glm::dvec3 N = glm::normalize(camera + ray * nearest - centre(metallic, col));
             const double NdotV = glm::dot(N, -ray);
             if (NdotV < 0.15) continue;
-            const double roughness = roughnessOf(col);
             const glm::dvec2 ab = scaleBias(col, NdotV);
-            const double F0 = metallic == 1 ? 1.0 : 0.04;
-            const double F = F0 + (std::max(1.0 - roughness, F0) - F0) * std::pow(1.0 - NdotV, 5.0);
-            const double expected = (1.0 - F) * (1.0 - metallic) + F * ab.x + ab.y;
-            const float* p = &pixels[(size_t(py) * kWidth + size_t(px)) * 4];
-            ASSERT_EQ(p[3], 1.0f) << "no sphere drawn at pixel " << px << ", " << py;
-            const double x = std::pow(double(p[0]), 2.2);  // undo gamma 1/2.2, then Reinhard
-            const double rendered = x / (1.0 - x);
-            Stats& s = stats[size_t(metallic * kColumns + col)];
-            if (std::abs(rendered - expected) > 0.02) ++s.outside;
-            s.lowest = std::min(s.lowest, rendered);
-            s.highest = std::max(s.highest, rendered);
-            s.lowestExpected = std::min(s.lowestExpected, expected);
-            s.sum += rendered;
-            ++s.count;
+            const size_t at = (size_t(py) * kWidth + size_t(px)) * 4;
+            ASSERT_EQ(textForm[at + 3], 1.0f) << "no sphere drawn at pixel " << px << ", " << py;
+            auto radiance = [](float encoded) {  // undo gamma 1/2.2, then Reinhard
+                const double x = std::pow(double(encoded), 2.2);
+                return x / (1.0 - x);
+            };
+            const size_t sphere = size_t(metallic * kColumns + col);
+            const double metalAlbedo = ab.x + ab.y;
+            text[sphere].add(radiance(textForm[at]), metallic == 1 ? metalAlbedo : 1.0);
+            exact[sphere].add(radiance(exactForm[at]), metallic == 1 ? metalAlbedo : 1.0);
         }
     }
     for (int metallic = 0; metallic < 2; ++metallic) {
         for (int col = 0; col < kColumns; ++col) {
-            const Stats& s = stats[size_t(metallic * kColumns + col)];
-            ASSERT_GT(s.count, 500) << "sphere " << metallic << ", " << col << " barely visible";
-            EXPECT_EQ(s.outside, 0)
-                << s.outside << " of " << s.count << " pixels of the sphere metallic " << metallic
-                << ", roughness " << roughnessOf(col) << " outside the derived band";
+            const size_t i = size_t(metallic * kColumns + col);
+            ASSERT_GT(text[i].count, 500)
+                << "sphere " << metallic << ", " << col << " barely visible";
             std::printf(
-                "furnace metallic %d roughness %.1f: %.3f..%.3f (mean %.3f; CPU lowest "
-                "%.3f)\n",
-                metallic, roughnessOf(col), s.lowest, s.highest, s.sum / s.count, s.lowestExpected);
+                "furnace metallic %d roughness %.1f: text form %.3f..%.3f, exact %.3f..%.3f "
+                "(mean %.3f)\n",
+                metallic, roughnessOf(col), text[i].lowest, text[i].highest, exact[i].lowest,
+                exact[i].highest, exact[i].sum / exact[i].count);
+            // The exact form: every sphere within its band, and no pixel above 1.
+            EXPECT_EQ(exact[i].outside, 0)
+                << exact[i].outside << " of " << exact[i].count << " pixels of the sphere metallic "
+                << metallic << ", roughness " << roughnessOf(col)
+                << " outside the band (exact form)";
+            EXPECT_LE(exact[i].highest, 1.0 + 0.02) << "the exact form gains energy";
+            // The text's form: metals within the band (their F is 1, the forms agree).
+            if (metallic == 1) {
+                EXPECT_EQ(text[i].outside, 0)
+                    << text[i].outside << " pixels of the metal sphere of roughness "
+                    << roughnessOf(col) << " outside the band (text's form)";
+            }
         }
     }
+    // The text's form on a smooth dielectric: 1.24 towards the rim, as the README says.
+    EXPECT_NEAR(text[0].highest, 1.24, 0.02);
+    EXPECT_GT(text[1].highest, 1.15);
     // A white mirror in a white furnace vanishes: exactly 1 all over.
-    EXPECT_NEAR(stats[kColumns].lowest, 1.0, 0.02);
-    EXPECT_NEAR(stats[kColumns].highest, 1.0, 0.02);
+    EXPECT_NEAR(exact[kColumns].lowest, 1.0, 0.02);
+    EXPECT_NEAR(exact[kColumns].highest, 1.0, 0.02);
     // Single scattering loses energy with roughness: the roughest metal keeps well under 90 %.
-    EXPECT_LT(stats[2 * kColumns - 1].sum / stats[2 * kColumns - 1].count, 0.9);
+    EXPECT_LT(exact[2 * kColumns - 1].sum / exact[2 * kColumns - 1].count, 0.9);
+    while (app.nextFrame()) {
+    }
+}
+
+// A non-uniformly scaled object: normals go through the inverse transpose of the model matrix
+// (mat3(model), the text's shortcut, is right only for rotations and uniform scales). A sphere
+// stretched (2, 0.6, 1) and turned, drawn with 01's own shaders into an 8-bit target without
+// MSAA, against the CPU shading the same triangles (support/mesh_hit.h), whose normal matrix is
+// its own; within 2/255 wherever the picture is steady.
+TEST(Gl, NormalsUnderANonUniformScaleMatchTheCpu) {
+    const fs::path dir = test::testOutputDir("gl_normal_matrix");
+    App app = makeApp(dir, {"--msaa", "0"});
+    constexpr int kWidth = 320, kHeight = 240;
+    constexpr double kFovY = glm::radians(45.0);
+    const glm::dvec3 camera(0.0, 0.0, 6.0);
+    const glm::dmat4 model = glm::rotate(glm::scale(glm::dmat4(1.0), glm::dvec3(2.0, 0.6, 1.0)),
+                                         0.7, glm::dvec3(0.3, 1.0, 0.2));
+    const std::array<cpu::PointLight, 2> lights = {{
+        {{4.0f, 3.0f, 4.0f}, {60.0f, 60.0f, 60.0f}},
+        {{-4.0f, -1.0f, 3.0f}, {30.0f, 30.0f, 30.0f}},
+    }};
+
+    GlFramebuffer framebuffer;
+    GlRenderbuffer color, depth;
+    glBindRenderbuffer(GL_RENDERBUFFER, color.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kWidth, kHeight);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kWidth, kHeight);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+    requireCompleteFramebuffer("normal-matrix target");
+    glViewport(0, 0, kWidth, kHeight);
+    glEnable(GL_DEPTH_TEST);
+    glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    Shader& shader = app.shader("common/pbr.vert", "01_lighting/pbr.frag");
+    shader.set("projection",
+               glm::perspective(float(kFovY), float(kWidth) / float(kHeight), 0.1f, 100.0f));
+    shader.set("view", glm::lookAt(glm::vec3(camera), glm::vec3(0.0f), glm::vec3(0, 1, 0)));
+    shader.set("camPos", glm::vec3(camera));
+    shader.set("albedo", glm::vec3(0.2f, 0.5f, 0.8f));
+    shader.set("ao", 1.0f);
+    shader.set("metallic", 0.3f);
+    shader.set("roughness", 0.45f);
+    const std::array<glm::vec3, 2> positions = {lights[0].position, lights[1].position};
+    setPointLights(shader, positions, glm::vec3(0.0f));
+    shader.set("lightColors[0]", lights[0].color);
+    shader.set("lightColors[1]", lights[1].color);
+    shader.setModel(glm::mat4(model));
+    const MeshData sphere = uvSphere(64, 64);
+    const GpuMesh gpuSphere(sphere);
+    gpuSphere.draw();
+    std::vector<std::uint8_t> pixels(size_t(kWidth) * kHeight * 4);
+    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    const glm::dvec3 front = glm::normalize(-camera);
+    auto predict = [&](double x, double y) -> std::optional<glm::dvec3> {
+        const glm::dvec3 ray = test::cameraRay(front, kFovY, kWidth, kHeight, x, y);
+        const auto hit = test::hitUvSphere(sphere, 64, 64, model, camera, ray);
+        if (!hit) return std::nullopt;
+        cpu::SurfacePoint surface;
+        surface.position = glm::vec3(hit->position);
+        surface.normal = glm::vec3(hit->normal);
+        surface.albedo = {0.2f, 0.5f, 0.8f};
+        surface.metallic = 0.3f;
+        surface.roughness = 0.45f;
+        return glm::dvec3(
+                   cpu::reinhardGamma(cpu::shadePointLights(surface, glm::vec3(camera), lights))) *
+               255.0;
+    };
+    int checked = 0;
+    double worst = 0.0;
+    for (int py = 0; py < kHeight; ++py) {
+        for (int px = 0; px < kWidth; ++px) {
+            const auto expected = predict(px + 0.5, py + 0.5);
+            if (!expected) continue;
+            bool steady = true;
+            for (auto [ox, oy] : {std::pair{0.25, 0.0}, {-0.25, 0.0}, {0.0, 0.25}, {0.0, -0.25}}) {
+                const auto near = predict(px + 0.5 + ox, py + 0.5 + oy);
+                if (!near || glm::length(*near - *expected) > 1.0) steady = false;
+            }
+            if (!steady) continue;
+            const size_t at =
+                (size_t(kHeight - 1 - py) * kWidth + size_t(px)) * 4;  // GL: bottom up
+            double diff = 0.0;
+            for (int c = 0; c < 3; ++c)
+                diff = std::max(
+                    diff, std::abs(double(pixels[at + size_t(c)]) - std::round((*expected)[c])));
+            worst = std::max(worst, diff);
+            EXPECT_LE(diff, 2.0) << "pixel " << px << ", " << py;
+            ++checked;
+        }
+    }
+    std::printf("non-uniform scale: %d pixels compared, worst channel diff %.0f/255\n", checked,
+                worst);
+    EXPECT_GT(checked, 4000);  // measured: 5,060 of the ellipsoid's pixels are steady
+    while (app.nextFrame()) {
+    }
+}
+
+// No seams along the cube's edges: the rough levels of the prefiltered map (4 x 4 and 2 x 2
+// texels a face) are read across face edges, where only seamless cube-map filtering (on for the
+// whole run, the App's job) blends the two faces; without it each face clamps to its own edge
+// texels and the reading jumps at the edge. Along paths that cross edges, the largest step
+// between neighbouring readings must stay within a few times the typical one.
+TEST(Gl, NoSeamsAcrossCubeFaces) {
+    const fs::path dir = test::testOutputDir("gl_seams");
+    App app = makeApp(dir);
+    HdrImage sky{64, 32, std::vector<float>(64 * 32 * 3)};
+    for (int y = 0; y < 32; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            const float u = (x + 0.5f) / 64.0f, v = (y + 0.5f) / 32.0f;
+            const float value = 1.0f + 0.8f * std::sin(6.2832f * u) * std::cos(3.1416f * v) + v;
+            for (int c = 0; c < 3; ++c) sky.pixels[(size_t(y) * 64 + size_t(x)) * 3 + c] = value;
+        }
+    }
+    const TextureCube environment = equirectangularToCubemap(Texture2D(sky), 64);
+    const TextureCube prefiltered = prefilterSpecular(environment, 16, 5, 256);
+
+    // A fragment shader that reads the map along a path from `start` to `end`, one texel a step.
+    const fs::path fragment = dir / "read_path.frag";
+    writeFileAtomically(fragment, R"(#version 330 core
+out vec4 FragColor;
+in vec2 TexCoords;
+uniform samplerCube map;
+uniform float lod;
+uniform vec3 start, end;
+void main() { FragColor = vec4(textureLod(map, normalize(mix(start, end, TexCoords.x)), lod).rgb, 1.0); }
+)");
+    Shader shader(shaderDir() / "ibl/fullscreen.vert", fragment);
+    constexpr int kSteps = 1024;
+    GlFramebuffer framebuffer;
+    GlRenderbuffer color;
+    glBindRenderbuffer(GL_RENDERBUFFER, color.id());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, kSteps, 1);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+    requireCompleteFramebuffer("seam target");
+    glViewport(0, 0, kSteps, 1);
+    glDisable(GL_DEPTH_TEST);
+    shader.set("map", 0);
+    prefiltered.bind(0);
+    const GpuMesh quad(pbr::quad());
+    // Paths across the +X/+Z, +X/+Y, -Y/-Z and -X/+Y edges.
+    const std::array<std::pair<glm::vec3, glm::vec3>, 4> paths = {{
+        {{1.0f, 0.3f, 0.2f}, {0.2f, 0.3f, 1.0f}},
+        {{1.0f, 0.2f, 0.3f}, {0.2f, 1.0f, 0.3f}},
+        {{0.1f, -1.0f, -0.2f}, {0.1f, -0.2f, -1.0f}},
+        {{-1.0f, 0.2f, -0.4f}, {-0.2f, 1.0f, -0.4f}},
+    }};
+    for (const float lod : {3.0f, 4.0f}) {
+        for (const auto& [start, end] : paths) {
+            shader.set("lod", lod);
+            shader.set("start", start);
+            shader.set("end", end);
+            quad.draw();
+            std::vector<float> readings(size_t(kSteps) * 4);
+            glReadPixels(0, 0, kSteps, 1, GL_RGBA, GL_FLOAT, readings.data());
+            std::vector<double> steps;
+            for (int i = 0; i + 1 < kSteps; ++i) {
+                steps.push_back(
+                    std::abs(double(readings[size_t(i + 1) * 4]) - readings[size_t(i) * 4]));
+            }
+            std::vector<double> sorted = steps;
+            std::sort(sorted.begin(), sorted.end());
+            const double typical = sorted[sorted.size() * 3 / 4], largest = sorted.back();
+            std::printf("lod %.0f, path from (%.1f, %.1f, %.1f): largest step %.5f, typical %.5f\n",
+                        double(lod), double(start.x), double(start.y), double(start.z), largest,
+                        typical);
+            EXPECT_LT(largest, 8.0 * typical + 1e-4)
+                << "a jump along the path from (" << start.x << ", " << start.y << ", " << start.z
+                << ") at lod " << lod << ": a seam";
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glEnable(GL_DEPTH_TEST);
     while (app.nextFrame()) {
     }
 }

@@ -78,3 +78,36 @@ TEST(Brdf, ReinhardGammaMapsZeroOneAndInfinity) {
 
 }  // namespace
 }  // namespace pbr::cpu
+
+namespace pbr {
+namespace {
+
+// The LUT's reference quadrature, checked against what is known without it. Near a mirror
+// (roughness 0.01) every half vector is the normal: VdotH = NdotV and G = 1, so the scale and bias
+// are 1 - (1 - NdotV)^5 and (1 - NdotV)^5 exactly in the limit.
+TEST(BrdfQuadrature, MirrorLimitIsFresnelSchlick) {
+    for (const double NdotV : {0.2, 0.5, 0.9}) {
+        const glm::dvec2 ab = cpu::splitSumQuadrature(NdotV, 0.01);
+        const double Fc = std::pow(1.0 - NdotV, 5.0);
+        EXPECT_NEAR(ab.x, 1.0 - Fc, 2e-3) << NdotV;
+        EXPECT_NEAR(ab.y, Fc, 2e-3) << NdotV;
+    }
+}
+
+// For wide lobes a plain midpoint sum over light directions converges, and must agree with the
+// half-vector quadrature on all three channels.
+TEST(BrdfQuadrature, AgreesWithABruteForceSumOverLightDirections) {
+    for (const double NdotV : {0.2, 0.6, 0.95}) {
+        for (const double roughness : {0.5, 0.8, 1.0}) {
+            const glm::dvec3 brute = cpu::bruteForceLut(NdotV, roughness, 500);
+            const glm::dvec2 ab = cpu::splitSumQuadrature(NdotV, roughness);
+            const double sheen = cpu::sheenQuadrature(NdotV, roughness);
+            EXPECT_NEAR(ab.x, brute.x, 1e-3) << NdotV << ", " << roughness;
+            EXPECT_NEAR(ab.y, brute.y, 1e-3) << NdotV << ", " << roughness;
+            EXPECT_NEAR(sheen, brute.z, 1e-3) << NdotV << ", " << roughness;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace pbr
