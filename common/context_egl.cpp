@@ -124,14 +124,13 @@ public:
         display_ = chosen.display;
         platform_ = chosen.platform;
         if (display_ == EGL_NO_DISPLAY) {
-            throw Error(std::string(softwareOnly ? "egl-software: no software display ("
-                                                 : "egl: no display (") +
+            throw Error(prefix() + (softwareOnly ? "no software display (" : "no display (") +
                         eglErrorText() + ")");
         }
         EGLint major = 0, minor = 0;
         if (!eglInitialize(display_, &major, &minor)) {
-            throw Error("egl: cannot initialise the " + platform_ + " display (" + eglErrorText() +
-                        ")");
+            throw Error(prefix() + "cannot initialise the " + platform_ + " display (" +
+                        eglErrorText() + ")");
         }
         keepDriDriversLoaded();
         try {
@@ -143,20 +142,23 @@ public:
     }
     ~EglContext() override { release(); }
 
+    // What every message starts with: the backend asked for.
+    std::string prefix() const { return softwareOnly_ ? "egl-software: " : "egl: "; }
+
     std::string backend() const override {
         return std::string(softwareOnly_ ? "egl-software/" : "egl/") + platform_;
     }
 
 private:
     void create(bool egl15, bool debug) {
-        if (!eglBindAPI(EGL_OPENGL_API)) throw Error("egl: desktop OpenGL is not available");
+        if (!eglBindAPI(EGL_OPENGL_API)) throw Error(prefix() + "desktop OpenGL is not available");
         const EGLint configAttributes[] = {
             EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE,
         };
         EGLConfig config = nullptr;
         EGLint configs = 0;
         if (!eglChooseConfig(display_, configAttributes, &config, 1, &configs) || configs < 1) {
-            throw Error("egl: no config for desktop OpenGL on the " + platform_ + " display");
+            throw Error(prefix() + "no config for desktop OpenGL on the " + platform_ + " display");
         }
         std::vector<EGLint> contextAttributes = {
             EGL_CONTEXT_MAJOR_VERSION,       3,
@@ -178,27 +180,27 @@ private:
         contextAttributes.push_back(EGL_NONE);
         context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, contextAttributes.data());
         if (context_ == EGL_NO_CONTEXT) {
-            throw Error("egl: cannot create a GL 3.3 core context (" + eglErrorText() + ")");
+            throw Error(prefix() + "cannot create a GL 3.3 core context (" + eglErrorText() + ")");
         }
         if (!hasExtension(eglQueryString(display_, EGL_EXTENSIONS),
                           "EGL_KHR_surfaceless_context")) {
             const EGLint pbufferAttributes[] = {EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE};
             surface_ = eglCreatePbufferSurface(display_, config, pbufferAttributes);
             if (surface_ == EGL_NO_SURFACE)
-                throw Error("egl: cannot create a pbuffer (" + eglErrorText() + ")");
+                throw Error(prefix() + "cannot create a pbuffer (" + eglErrorText() + ")");
         }
         if (!eglMakeCurrent(display_, surface_, surface_, context_)) {
-            throw Error("egl: cannot make the context current (" + eglErrorText() + ")");
+            throw Error(prefix() + "cannot make the context current (" + eglErrorText() + ")");
         }
         if (!gladLoadGL(eglProcAddress))
-            throw Error("egl: cannot load the OpenGL functions (gladLoadGL failed)");
+            throw Error(prefix() + "cannot load the OpenGL functions (gladLoadGL failed)");
         if (softwareOnly_) {
             // The surfaceless platform renders on a GPU when it finds one: not what was asked.
             const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
             const std::string name = renderer ? renderer : "unknown";
             if (name.find("llvmpipe") == std::string::npos &&
                 name.find("softpipe") == std::string::npos) {
-                throw Error("egl-software: the " + platform_ + " display renders on " + name +
+                throw Error(prefix() + "the " + platform_ + " display renders on " + name +
                             ", not in software, and Mesa's software device is missing");
             }
         }

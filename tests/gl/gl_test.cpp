@@ -29,14 +29,27 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A headless App as a sample would make it, drawing into `dir`.
-App makeApp(const fs::path& dir, std::vector<std::string> extra = {}) {
+// The command line of a headless App as a sample would make it, drawing into `dir`.
+std::vector<std::string> appArguments(const fs::path& dir, const std::vector<std::string>& extra) {
     std::vector<std::string> args = {"gl_test", "--headless", "--size",
                                      "64x36",   "--output",   (dir / "out.png").string()};
     args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+}
+
+App makeApp(const fs::path& dir, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = appArguments(dir, extra);
     std::vector<char*> argv;
     for (std::string& arg : args) argv.push_back(arg.data());
     return App(int(argv.size()), argv.data(), {.name = "gl_test"});
+}
+
+// The same on the heap, for a test that may find the App cannot be made.
+std::unique_ptr<App> newApp(const fs::path& dir, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = appArguments(dir, extra);
+    std::vector<char*> argv;
+    for (std::string& arg : args) argv.push_back(arg.data());
+    return std::make_unique<App>(int(argv.size()), argv.data(), AppConfig{.name = "gl_test"});
 }
 
 TEST(Gl, AGlErrorFailsTheRunAndIsNamed) {
@@ -64,7 +77,15 @@ TEST(Gl, ErrorsFailTheRunEvenWithDebugMessagesMuted) {
     const fs::path dir = test::testOutputDir("gl_error_muted");
     for (const std::string& backend : offscreenBackends()) {
         for (const bool switchedOff : {false, true}) {
-            App app = makeApp(dir, {"--backend", backend});
+            std::unique_ptr<App> made;
+            try {
+                made = newApp(dir, {"--backend", backend});
+            } catch (const Error& e) {
+                if (std::string(e.what()).rfind(backend + ":", 0) != 0) throw;
+                std::printf("skipped %s: %s\n", backend.c_str(), e.what());  // not on this machine
+                break;
+            }
+            App& app = *made;
             ASSERT_TRUE(app.nextFrame());
             if (backend.starts_with("egl")) {
                 GLint flags = 0;

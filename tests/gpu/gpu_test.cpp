@@ -25,15 +25,12 @@ namespace fs = std::filesystem;
 
 constexpr GoldenGate kGpuGate{.channelThreshold = 8, .maxFractionOver = 0.02, .minPsnr = 32.0};
 
-// The renderer `--backend egl` reaches here, found once by drawing 16 x 16 pixels.
-const std::string& eglRenderer() {
-    static const std::string renderer = [] {
-        const fs::path dir = testOutputDir("gpu_probe");
-        const SampleRender probe =
-            renderSample("01_lighting", dir / "probe.png", {"--backend", "egl", "--size", "16x16"});
-        return probe.run.exitCode == 0 ? probe.renderer : std::string();
-    }();
-    return renderer;
+// The renderer `--backend egl` reaches here, found by drawing 16 x 16 pixels into `dir` (each
+// test's own folder: ctest runs the tests side by side).
+std::string eglRenderer(const fs::path& dir) {
+    const SampleRender probe =
+        renderSample("01_lighting", dir / "probe.png", {"--backend", "egl", "--size", "16x16"});
+    return probe.run.exitCode == 0 ? probe.renderer : std::string();
 }
 
 bool software(const std::string& renderer) {
@@ -45,14 +42,13 @@ class GpuImage : public ::testing::TestWithParam<GoldenCase> {};
 
 TEST_P(GpuImage, CloseToGolden) {
     const GoldenCase& golden = GetParam();
-    if (eglRenderer().empty()) GTEST_SKIP() << "no EGL context here: nothing to run on a GPU";
-    if (software(eglRenderer())) {
-        GTEST_SKIP() << "no GPU: --backend egl renders on " << eglRenderer();
-    }
+    const fs::path dir = testOutputDir("gpu_" + golden.golden);
+    const std::string renderer = eglRenderer(dir);
+    if (renderer.empty()) GTEST_SKIP() << "no EGL context here: nothing to run on a GPU";
+    if (software(renderer)) GTEST_SKIP() << "no GPU: --backend egl renders on " << renderer;
     if (golden.needsAssimpModels) {
         PBR_NEED_ASSIMP_MODELS(models);
     }
-    const fs::path dir = testOutputDir("gpu_" + golden.golden);
     std::vector<std::string> args = golden.args;
     args.insert(args.end(), {"--backend", "egl"});
     const SampleRender render = renderSample(golden.sample, dir / (golden.golden + ".png"), args);

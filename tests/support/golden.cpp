@@ -32,6 +32,14 @@ GoldenVerdict judge(const Image& actual, const Image& expected, const GoldenGate
     return verdict;
 }
 
+std::optional<std::string> backendUnavailable(const RunResult& run, const std::string& backend) {
+    const auto lines = run.errLines();
+    if (run.exitCode == 0 || lines.empty()) return std::nullopt;
+    const std::string prefix = "error: " + backend + ":";
+    if (lines.back().rfind(prefix, 0) != 0) return std::nullopt;
+    return "the " + backend + " backend cannot start here: " + lines.back().substr(7);
+}
+
 SampleRender renderSample(const std::string& sample, const fs::path& output,
                           const std::vector<std::string>& args) {
     std::vector<std::string> argv = {sample, "--headless", "--output", output.string()};

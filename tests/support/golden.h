@@ -5,6 +5,7 @@
 // Goldens change only on purpose: run the golden tests with PBR_UPDATE_GOLDENS=1, look at the new
 // pictures, and say why in the commit.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,10 @@ struct SampleRender {
     std::string backend;   // from the sample's "wrote ..." line: "osmesa", "egl/surfaceless", ...
     std::string renderer;  // the GL_RENDERER string, from the same line
 };
+// When a run failed because `backend` cannot start on this machine (its errors start with the
+// backend's name: "egl-software: no software display ..."), the reason, for a visible skip.
+std::optional<std::string> backendUnavailable(const RunResult& run, const std::string& backend);
+
 // Runs `sample --headless --output <output> <args...>`.
 SampleRender renderSample(const std::string& sample, const std::filesystem::path& output,
                           const std::vector<std::string>& args = {});

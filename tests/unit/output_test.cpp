@@ -36,7 +36,7 @@ TEST(Output, WritesAndReplacesWhole) {
 }
 
 TEST(Output, MissingFolderIsNamedAndNothingIsCreated) {
-    const fs::path dir = testOutputDir("output_missing_folder");
+    const fs::path dir = testOutputDir("output_unit_missing_folder");
     const std::string error =
         errorOf([&] { writeFileAtomically(dir / "nowhere" / "a.txt", "bytes"); });
     EXPECT_NE(error.find("a.txt: no such folder"), std::string::npos) << error;
