@@ -70,6 +70,28 @@ TEST(Gl, AGlErrorFailsTheRunAndIsNamed) {
     }
 }
 
+// A framebuffer of the test's own, bound with its viewport: a colour renderbuffer of `format`
+// and, when asked, a depth one.
+struct TestTarget {
+    GlFramebuffer framebuffer;
+    GlRenderbuffer color, depth;
+    TestTarget(int width, int height, GLenum format, bool withDepth, const char* what) {
+        glBindRenderbuffer(GL_RENDERBUFFER, color.id());
+        glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  color.id());
+        if (withDepth) {
+            glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
+            glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                      depth.id());
+        }
+        requireCompleteFramebuffer(what);
+        glViewport(0, 0, width, height);
+    }
+};
+
 // No GL error can vanish: with KHR_debug's messages muted, or debug output switched off, three
 // GL_INVALID_ENUMs still fail the run (glGetError is always asked), on every offscreen backend.
 // And where the platform can make a debug context (EGL), the App asks for one.
@@ -335,17 +357,7 @@ TEST(Gl, WhiteFurnace) {
     auto roughnessOf = [](int col) { return double(col) / double(kColumns - 1); };
 
     // A float render target of our own (the App's is 8-bit).
-    GlFramebuffer framebuffer;
-    GlRenderbuffer color, depth;
-    glBindRenderbuffer(GL_RENDERBUFFER, color.id());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, kWidth, kHeight);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kWidth, kHeight);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
-    requireCompleteFramebuffer("furnace target");
-    glViewport(0, 0, kWidth, kHeight);
+    const TestTarget target(kWidth, kHeight, GL_RGBA32F, true, "furnace target");
     glEnable(GL_DEPTH_TEST);
 
     Shader& shader = app.shader("common/pbr.vert", "05_ibl_specular/pbr.frag");
@@ -495,17 +507,7 @@ TEST(Gl, NormalsUnderANonUniformScaleMatchTheCpu) {
         {{-4.0f, -1.0f, 3.0f}, {30.0f, 30.0f, 30.0f}},
     }};
 
-    GlFramebuffer framebuffer;
-    GlRenderbuffer color, depth;
-    glBindRenderbuffer(GL_RENDERBUFFER, color.id());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kWidth, kHeight);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, kWidth, kHeight);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
-    requireCompleteFramebuffer("normal-matrix target");
-    glViewport(0, 0, kWidth, kHeight);
+    const TestTarget target(kWidth, kHeight, GL_RGBA8, true, "normal-matrix target");
     glEnable(GL_DEPTH_TEST);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -606,14 +608,7 @@ void main() { FragColor = vec4(textureLod(map, normalize(mix(start, end, TexCoor
 )");
     Shader shader(shaderDir() / "ibl/fullscreen.vert", fragment);
     constexpr int kSteps = 1024;
-    GlFramebuffer framebuffer;
-    GlRenderbuffer color;
-    glBindRenderbuffer(GL_RENDERBUFFER, color.id());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, kSteps, 1);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
-    requireCompleteFramebuffer("seam target");
-    glViewport(0, 0, kSteps, 1);
+    const TestTarget target(kSteps, 1, GL_RGBA32F, false, "seam target");
     glDisable(GL_DEPTH_TEST);
     shader.set("map", 0);
     prefiltered.bind(0);
@@ -660,13 +655,7 @@ void main() { FragColor = vec4(textureLod(map, normalize(mix(start, end, TexCoor
 TEST(Gl, IblPassesLeaveTheCallersStateAlone) {
     const fs::path dir = test::testOutputDir("gl_state");
     App app = makeApp(dir);
-    GlFramebuffer mine;
-    GlRenderbuffer mineColor;
-    glBindRenderbuffer(GL_RENDERBUFFER, mineColor.id());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 32, 32);
-    glBindFramebuffer(GL_FRAMEBUFFER, mine.id());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                              mineColor.id());
+    const TestTarget mine(32, 32, GL_RGBA8, false, "the caller's target");
     glViewport(3, 5, 17, 19);
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
@@ -681,7 +670,7 @@ TEST(Gl, IblPassesLeaveTheCallersStateAlone) {
     auto expectUnchanged = [&](const char* pass) {
         GLint value = 0, viewport[4] = {};
         glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &value);
-        EXPECT_EQ(GLuint(value), mine.id()) << pass;
+        EXPECT_EQ(GLuint(value), mine.framebuffer.id()) << pass;
         glGetIntegerv(GL_VIEWPORT, viewport);
         EXPECT_EQ(viewport[0], 3) << pass;
         EXPECT_EQ(viewport[3], 19) << pass;

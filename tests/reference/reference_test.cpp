@@ -109,6 +109,26 @@ Comparison compareGrid(const Image& image, const Predictor& predict) {
     return result;
 }
 
+// Sample 01's lights and the material of its sphere (row, col), from SAMPLES.md.
+const std::array<cpu::PointLight, 4> kGridLights = {{
+    {{-10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
+    {{10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
+    {{-10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
+    {{10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
+}};
+
+cpu::SurfacePoint gridSurface(const glm::dvec3& position, const glm::dvec3& normal, int row,
+                              int col) {
+    cpu::SurfacePoint surface;
+    surface.position = glm::vec3(position);
+    surface.normal = glm::vec3(normal);
+    surface.albedo = {0.5f, 0.0f, 0.0f};
+    surface.metallic = float(row) / 7.0f;
+    surface.roughness = std::clamp(float(col) / 7.0f, 0.05f, 1.0f);
+    surface.ao = 1.0f;
+    return surface;
+}
+
 glm::dvec3 toBytes(const glm::vec3& linear) {
     return glm::dvec3(cpu::reinhardGamma(linear)) * 255.0;
 }
@@ -121,24 +141,12 @@ TEST(Reference, Lighting01EverySphereMatchesTheCpuBrdf) {
     const Image image = readImage(render.image, 3);
     ASSERT_EQ(image.width, kWidth);
 
-    const std::array<cpu::PointLight, 4> lights = {{
-        {{-10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-        {{10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-        {{-10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-        {{10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-    }};
     const Comparison result =
         compareGrid(image, [&](double x, double y, int row, int col) -> std::optional<glm::dvec3> {
             const auto hit = hitSphere(x, y, row, col);
             if (!hit || hit->ndotv < 0.5) return std::nullopt;
-            cpu::SurfacePoint surface;
-            surface.position = glm::vec3(hit->position);
-            surface.normal = glm::vec3(hit->normal);
-            surface.albedo = {0.5f, 0.0f, 0.0f};
-            surface.metallic = float(row) / 7.0f;
-            surface.roughness = std::clamp(float(col) / 7.0f, 0.05f, 1.0f);
-            surface.ao = 1.0f;
-            return toBytes(cpu::shadePointLights(surface, glm::vec3(kCamera), lights));
+            return toBytes(cpu::shadePointLights(gridSurface(hit->position, hit->normal, row, col),
+                                                 glm::vec3(kCamera), kGridLights));
         });
     std::printf(
         "compared %d pixels on 49 spheres (skipped %d on steep highlights); worst channel diff "
@@ -162,25 +170,14 @@ TEST(Reference, Lighting01AgainstTheLightAtGrazingAngles) {
     ASSERT_EQ(image.width, kWidth);
 
     const glm::dvec3 camera(0.0, 0.0, -23.0), front(0.0, 0.0, 1.0);
-    const std::array<cpu::PointLight, 4> lights = {{
-        {{-10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-        {{10.0f, 10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-        {{-10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-        {{10.0f, -10.0f, 10.0f}, {300.0f, 300.0f, 300.0f}},
-    }};
     const MeshData sphere = uvSphere(64, 64);
     auto predict = [&](double x, double y, int row, int col) -> std::optional<glm::dvec3> {
         const glm::dvec3 ray = cameraRay(front, kFovY, kWidth, kHeight, x, y);
         const glm::dmat4 model = glm::translate(glm::dmat4(1.0), sphereCentre(row, col));
         const auto hit = hitUvSphere(sphere, 64, 64, model, camera, ray);
         if (!hit) return std::nullopt;
-        cpu::SurfacePoint surface;
-        surface.position = glm::vec3(hit->position);
-        surface.normal = glm::vec3(hit->normal);
-        surface.albedo = {0.5f, 0.0f, 0.0f};
-        surface.metallic = float(row) / 7.0f;
-        surface.roughness = std::clamp(float(col) / 7.0f, 0.05f, 1.0f);
-        return toBytes(cpu::shadePointLights(surface, glm::vec3(camera), lights));
+        return toBytes(cpu::shadePointLights(gridSurface(hit->position, hit->normal, row, col),
+                                             glm::vec3(camera), kGridLights));
     };
     int checked = 0, grazing = 0, grazingLit = 0, skipped = 0;
     double worst = 0.0;
