@@ -64,11 +64,11 @@ RenderTarget::RenderTarget(int width, int height, int samples, bool srgb)
 void RenderTarget::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 0 ? multisampled_.id() : resolved_.id());
     glViewport(0, 0, width_, height_);
-    (srgb_ ? glEnable : glDisable)(GL_FRAMEBUFFER_SRGB);
+    if (srgb_) glEnable(GL_FRAMEBUFFER_SRGB);  // on only while an sRGB target is drawn into
 }
 
 void RenderTarget::resolve() const {
-    glDisable(GL_FRAMEBUFFER_SRGB);  // the stored bytes, as they are
+    if (srgb_) glDisable(GL_FRAMEBUFFER_SRGB);  // the stored bytes, as they are
     if (samples_ == 0) return;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_.id());
@@ -77,7 +77,7 @@ void RenderTarget::resolve() const {
 }
 
 void RenderTarget::blitToDefault(int width, int height) const {
-    glDisable(GL_FRAMEBUFFER_SRGB);
+    if (srgb_) glDisable(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -86,7 +86,7 @@ void RenderTarget::blitToDefault(int width, int height) const {
 Image RenderTarget::readPixels() const {
     Image image{width_, height_, 3, {}};
     image.pixels.resize(size_t(width_) * size_t(height_) * 3);
-    glDisable(GL_FRAMEBUFFER_SRGB);
+    if (srgb_) glDisable(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, image.pixels.data());

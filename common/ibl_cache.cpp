@@ -208,9 +208,8 @@ MapFile IblEnvironment::prefilteredFile(int size, int levels, int samples) const
                 shaderCodeHash("ibl/cubemap.vert", "ibl/prefilter.frag") + "; from " +
                 environmentKey_,
             "GGX-prefiltered specular cube map, " + std::to_string(size) +
-                "^2, mip m for "
-                "roughness m / " +
-                std::to_string(levels - 1) + ", " + std::to_string(samples) + " samples"};
+                "^2, mip m for roughness m / " + std::to_string(levels - 1) + ", " +
+                std::to_string(samples) + " samples"};
 }
 
 const TextureCube& IblEnvironment::environmentMap() {

@@ -65,6 +65,8 @@ int main(int argc, char** argv) try {
         shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
         shader.set("ao", 1.0f);
     }
+    // Units 5-7 hold the split-sum maps for the whole run: nothing else binds them.
+    pbr::useIblMaps(shader, irradianceMap, prefilterMap, brdfLUT, 5);
     shader.set("exactSplitSum", app.flagChoice("--split-sum") == "exact" ? 1 : 0);
     pbr::setPointLights(shader, pbr::kGridLightPositions, glm::vec3(300.0f));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
@@ -79,7 +81,6 @@ int main(int argc, char** argv) try {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
-        pbr::useIblMaps(shader, irradianceMap, prefilterMap, brdfLUT, 5);
         if (textured) {
             for (int col = 0; col < row.nrColumns; ++col) {
                 materials[size_t(col)].bind();
