@@ -41,7 +41,8 @@ std::string jsonEscape(const std::string& text) {
 App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (config_.title.empty()) config_.title = config_.name;
     usage_ =
-        usageText(argc > 0 ? fs::path(argv[0]).filename().string() : config_.name, config_.flags);
+        usageText(argc > 0 ? fs::path(argv[0]).filename().string() : config_.name, config_.flags,
+                  config_.orbitCamera);
     std::vector<std::string> args(argv + std::min(argc, 1), argv + argc);
     try {
         options_ = parseOptions(args, config_.flags);
@@ -51,6 +52,12 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (options_.help) {
         std::fputs(usage_.c_str(), stdout);
         throw ExitRequest{0};
+    }
+    if (config_.orbitCamera && options_.camera && options_.camera->yaw) {
+        throw UsageError(
+            "--camera: this sample's orbit camera looks at the model's centre: give x,y,z only, "
+            "without yaw and pitch",
+            usage_);
     }
     // Where files will go, checked before any window opens or anything is computed: a picture
     // that cannot be written should not cost a render first.
@@ -65,7 +72,7 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (!options_.headless) {
         std::string whyNot;
         context_ = createGlfwContext(config_.title, options_.width, options_.height,
-                                     !options_.benchmark, whyNot);
+                                     !options_.benchmark, !config_.orbitCamera, whyNot);
         if (!context_ && offscreenBackends().empty()) {
             throw Error(config_.name + ": " + whyNot +
                         ", and this build has no offscreen backend (built without OSMesa and EGL)");
@@ -113,6 +120,20 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     }
     if (options_.benchmark) context_->setVsync(false);
     checkGlErrors("start-up");
+}
+
+void App::useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
+    if (!config_.orbitCamera) {
+        throw Error(config_.name +
+                    ": useOrbitCamera needs AppConfig::orbitCamera = true (so that --camera is "
+                    "checked before any context, and the window leaves the cursor free)");
+    }
+    if (options_.camera) {
+        const CameraStart& start = *options_.camera;
+        orbit_ = OrbitCamera::fromPosition(boundsMin, boundsMax, {start.x, start.y, start.z});
+    } else {
+        orbit_ = OrbitCamera::framing(boundsMin, boundsMax, aspect());
+    }
 }
 
 App::~App() {
@@ -203,14 +224,20 @@ bool App::nextFrame() {
         time_ = headless() ? 0.0f : float(now - startSeconds_);
     }
 
-    if (input.forward) camera_.processKeyboard(CameraMove::Forward, deltaTime_);
-    if (input.backward) camera_.processKeyboard(CameraMove::Backward, deltaTime_);
-    if (input.left) camera_.processKeyboard(CameraMove::Left, deltaTime_);
-    if (input.right) camera_.processKeyboard(CameraMove::Right, deltaTime_);
-    if (input.mouseDelta != glm::vec2(0.0f)) {
-        camera_.processMouseMovement(input.mouseDelta.x, input.mouseDelta.y);
+    if (orbit_) {
+        // Left drag orbits, scroll dollies; the cursor is free (AppConfig::orbitCamera).
+        if (input.dragDelta != glm::vec2(0.0f)) orbit_->orbit(input.dragDelta.x, input.dragDelta.y);
+        if (input.scroll != 0.0f) orbit_->dolly(input.scroll);
+    } else if (!config_.orbitCamera) {  // (an orbit sample before useOrbitCamera: no camera moves)
+        if (input.forward) camera_.processKeyboard(CameraMove::Forward, deltaTime_);
+        if (input.backward) camera_.processKeyboard(CameraMove::Backward, deltaTime_);
+        if (input.left) camera_.processKeyboard(CameraMove::Left, deltaTime_);
+        if (input.right) camera_.processKeyboard(CameraMove::Right, deltaTime_);
+        if (input.mouseDelta != glm::vec2(0.0f)) {
+            camera_.processMouseMovement(input.mouseDelta.x, input.mouseDelta.y);
+        }
+        if (input.scroll != 0.0f) camera_.processMouseScroll(input.scroll);
     }
-    if (input.scroll != 0.0f) camera_.processMouseScroll(input.scroll);
     if (input.reload) {
         int reloaded = 0;
         for (Shader& shader : shaders_) reloaded += shader.reload() ? 1 : 0;

@@ -38,6 +38,11 @@ struct AppConfig {
     // The render target stores sRGB and the GL encodes (see framebuffer.h): the sample's shaders
     // write linear values and blending happens in linear light.
     bool srgbTarget = false;
+    // The sample looks at a model through an OrbitCamera (App::useOrbitCamera): the cursor stays
+    // free in a window (left drag orbits, scroll dollies, WASD does nothing), and --camera takes
+    // x,y,z only: yaw and pitch are refused as a bad flag, before any context exists, since the
+    // orbit camera always looks at the model's centre.
+    bool orbitCamera = false;
 };
 
 class App {
@@ -72,8 +77,20 @@ public:
                           float pitch = FlyCamera::kDefaultPitch) {
         if (!options_.camera) camera_ = FlyCamera(position, yaw, pitch);
     }
-    glm::mat4 view() const { return camera_.viewMatrix(); }
-    glm::mat4 projection() const { return camera_.projectionMatrix(aspect()); }
+    // Switches to an orbit camera around these bounds (in the model's own units): framing them
+    // (OrbitCamera::framing at the current aspect), or, when --camera x,y,z was given, from that
+    // position looking at their centre (OrbitCamera::fromPosition). Needs AppConfig::orbitCamera;
+    // may be called again (another model): the view starts afresh.
+    void useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax);
+    // The orbit camera once useOrbitCamera was called, else nullptr.
+    const OrbitCamera* orbitCamera() const { return orbit_ ? &*orbit_ : nullptr; }
+
+    // The active camera's (orbit or fly).
+    glm::mat4 view() const { return orbit_ ? orbit_->viewMatrix() : camera_.viewMatrix(); }
+    glm::mat4 projection() const {
+        return orbit_ ? orbit_->projectionMatrix(aspect()) : camera_.projectionMatrix(aspect());
+    }
+    glm::vec3 cameraPosition() const { return orbit_ ? orbit_->position() : camera_.position(); }
 
     // A program from shaders/<vertex> and shaders/<fragment>, owned by the App so that R can
     // reload it. The reference stays valid for the App's life.
@@ -110,6 +127,7 @@ private:
     std::unique_ptr<RenderTarget> target_;
     std::deque<Shader> shaders_;
     FlyCamera camera_;
+    std::optional<OrbitCamera> orbit_;
 
     int framesWanted_ = 0;  // 0: until the window closes
     int frameIndex_ = -1;

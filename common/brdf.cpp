@@ -61,6 +61,85 @@ glm::vec3 shadePointLights(const SurfacePoint& s, const glm::vec3& cameraPositio
     return glm::vec3(0.03f) * s.albedo * s.ao + Lo;
 }
 
+float D_GGX(float NdotH, float alpha) {
+    const float a2 = alpha * alpha;
+    const float f = NdotH * NdotH * (a2 - 1.0f) + 1.0f;
+    return a2 / (PI * f * f);
+}
+
+float V_GGX(float NdotL, float NdotV, float alpha) {
+    const float a2 = alpha * alpha;
+    const float ggxV = NdotL * std::sqrt(NdotV * NdotV * (1.0f - a2) + a2);
+    const float ggxL = NdotV * std::sqrt(NdotL * NdotL * (1.0f - a2) + a2);
+    const float sum = ggxV + ggxL;
+    return sum > 0.0f ? 0.5f / sum : 0.0f;
+}
+
+GltfSurface metallicRoughnessSurface(const glm::vec3& position, const glm::vec3& normal,
+                                     const glm::vec3& baseColor, float metallic, float roughness) {
+    return {position, normal, baseColor * (1.0f - metallic),
+            glm::mix(glm::vec3(0.04f), baseColor, metallic), roughness};
+}
+
+glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                          const glm::vec3& radiance, const glm::vec3& diffuseColor,
+                          const glm::vec3& F0, float roughness) {
+    const float NdotL = std::clamp(glm::dot(N, L), 0.0f, 1.0f);
+    if (NdotL <= 0.0f) return glm::vec3(0.0f);
+    const glm::vec3 H = glm::normalize(V + L);
+    const float NdotV = std::clamp(glm::dot(N, V), 0.0f, 1.0f);
+    const float NdotH = std::clamp(glm::dot(N, H), 0.0f, 1.0f);
+    const float VdotH = std::clamp(glm::dot(V, H), 0.0f, 1.0f);
+    const float alpha = std::max(roughness * roughness, kMinGgxAlpha);
+    const glm::vec3 F = F0 + (1.0f - F0) * std::pow(1.0f - VdotH, 5.0f);
+    const glm::vec3 diffuse = (1.0f - F) * diffuseColor / PI;
+    const glm::vec3 specular = F * D_GGX(NdotH, alpha) * V_GGX(NdotL, NdotV, alpha);
+    return (diffuse + specular) * radiance * NdotL;
+}
+
+float rangeAttenuation(float range, float distance) {
+    const float inverseSquare = 1.0f / (distance * distance);
+    if (range <= 0.0f) return inverseSquare;
+    const float ratio = distance / range;
+    return std::clamp(1.0f - ratio * ratio * ratio * ratio, 0.0f, 1.0f) * inverseSquare;
+}
+
+float spotAttenuation(const glm::vec3& lightToPoint, const glm::vec3& spotDirection,
+                      float outerConeCos, float innerConeCos) {
+    const float cd = glm::dot(spotDirection, lightToPoint);
+    const float t =
+        std::clamp((cd - outerConeCos) / std::max(0.001f, innerConeCos - outerConeCos), 0.0f, 1.0f);
+    return t * t;
+}
+
+glm::vec3 punctualRadiance(const PunctualLight& light, const glm::vec3& position, glm::vec3& L) {
+    if (light.type == PunctualLight::Type::Directional) {
+        L = -light.direction;
+        return light.color;
+    }
+    const glm::vec3 toLight = light.position - position;
+    const float distance = glm::length(toLight);
+    L = toLight / distance;
+    glm::vec3 radiance = light.color * rangeAttenuation(light.range, distance);
+    if (light.type == PunctualLight::Type::Spot) {
+        radiance *= spotAttenuation(-L, light.direction, std::cos(light.outerConeAngle),
+                                    std::cos(light.innerConeAngle));
+    }
+    return radiance;
+}
+
+glm::vec3 shadePunctualLights(const GltfSurface& s, const glm::vec3& cameraPosition,
+                              std::span<const PunctualLight> lights) {
+    const glm::vec3 V = glm::normalize(cameraPosition - s.position);
+    glm::vec3 color(0.0f);
+    for (const PunctualLight& light : lights) {
+        glm::vec3 L;
+        const glm::vec3 radiance = punctualRadiance(light, s.position, L);
+        color += gltfDirectLight(s.normal, V, L, radiance, s.diffuseColor, s.F0, s.roughness);
+    }
+    return color;
+}
+
 glm::vec3 reinhardGamma(const glm::vec3& color) {
     const glm::vec3 mapped = color / (color + glm::vec3(1.0f));
     return glm::pow(mapped, glm::vec3(1.0f / 2.2f));

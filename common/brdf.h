@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include "punctual_light.h"
+
 namespace pbr::cpu {
 
 float DistributionGGX(const glm::vec3& N, const glm::vec3& H, float roughness);
@@ -48,6 +50,35 @@ double sheenQuadrature(double NdotV, double roughness);
 // midpoints in (theta_l, phi_l): slow, and fit only for wide lobes (roughness >= 0.4); kept as
 // a check of the half-vector quadrature itself.
 glm::dvec3 bruteForceLut(double NdotV, double roughness, int steps);
+
+// ---- glTF 2.0, Appendix B, and KHR_lights_punctual (the glTF samples 07, 08) ----
+// The same functions as shaders/include/brdf.glsl and punctual_lights.glsl.
+float D_GGX(float NdotH, float alpha);
+float V_GGX(float NdotL, float NdotV, float alpha);
+constexpr float kMinGgxAlpha = 0.002f;  // MIN_GGX_ALPHA of brdf.glsl
+// A surface as the Appendix B implementation takes it: c_diff and F0 (both workflows end here).
+struct GltfSurface {
+    glm::vec3 position;  // world space
+    glm::vec3 normal;    // unit, shading normal
+    glm::vec3 diffuseColor;
+    glm::vec3 F0;
+    float roughness = 0.5f;  // perceptual
+};
+// The metallic-roughness workflow's c_diff and F0 from a base colour and metallic.
+GltfSurface metallicRoughnessSurface(const glm::vec3& position, const glm::vec3& normal,
+                                     const glm::vec3& baseColor, float metallic, float roughness);
+glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                          const glm::vec3& radiance, const glm::vec3& diffuseColor,
+                          const glm::vec3& F0, float roughness);
+float rangeAttenuation(float range, float distance);
+float spotAttenuation(const glm::vec3& lightToPoint, const glm::vec3& spotDirection,
+                      float outerConeCos, float innerConeCos);
+// The radiance `light` brings to `position`, and the unit direction towards it in `L`.
+glm::vec3 punctualRadiance(const PunctualLight& light, const glm::vec3& position, glm::vec3& L);
+// Radiance towards `cameraPosition` from the punctual lights (no image-based light, no
+// emission), linear, before exposure and tone mapping.
+glm::vec3 shadePunctualLights(const GltfSurface& surface, const glm::vec3& cameraPosition,
+                              std::span<const PunctualLight> lights);
 
 // Reinhard c / (c + 1), then gamma 1/2.2: what the direct-light samples write.
 glm::vec3 reinhardGamma(const glm::vec3& color);

@@ -14,6 +14,7 @@ namespace pbr {
 struct InputFrame {
     bool forward = false, backward = false, left = false, right = false;
     glm::vec2 mouseDelta{0.0f};  // pixels, y up
+    glm::vec2 dragDelta{0.0f};   // the part of it made with the left mouse button held
     float scroll = 0.0f;
     bool screenshot = false;  // F12
     bool reload = false;      // R
@@ -70,9 +71,11 @@ std::vector<std::string> softwareBackends();
 std::unique_ptr<Context> createOsMesaContext(int width, int height);
 std::unique_ptr<Context> createEglContext(int width, int height, bool softwareOnly, bool debug);
 
-// A GLFW window with a GL 3.3 core context (a debug context when `debug`). Returns nullptr, with
-// the reason in `whyNot`, when there is no display to open it on.
+// A GLFW window with a GL 3.3 core context (a debug context when `debug`). `captureCursor` hides
+// the cursor and keeps it in the window (the fly camera's mouse look); without it the cursor is
+// free and dragDelta reports the drags. Returns nullptr, with the reason in `whyNot`, when there
+// is no display to open it on.
 std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, int height,
-                                           bool debug, std::string& whyNot);
+                                           bool debug, bool captureCursor, std::string& whyNot);
 
 }  // namespace pbr

@@ -21,9 +21,9 @@ void onGlfwError(int, const char* description) {
 
 class GlfwContext final : public Context {
 public:
-    explicit GlfwContext(GLFWwindow* window) : window_(window) {
+    GlfwContext(GLFWwindow* window, bool captureCursor) : window_(window) {
         glfwSetWindowUserPointer(window_, this);
-        glfwSetInputMode(window_, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
+        if (captureCursor) glfwSetInputMode(window_, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
         glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
             static_cast<GlfwContext*>(glfwGetWindowUserPointer(w))->onCursor(x, y);
         });
@@ -71,7 +71,10 @@ private:
             // The first event only sets the reference, so the view does not jump.
             haveCursor_ = true;
         } else {
-            pending_.mouseDelta += glm::vec2(float(x - lastX_), float(lastY_ - y));
+            const glm::vec2 delta(float(x - lastX_), float(lastY_ - y));
+            pending_.mouseDelta += delta;
+            if (glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS)
+                pending_.dragDelta += delta;
         }
         lastX_ = x;
         lastY_ = y;
@@ -86,7 +89,7 @@ private:
 }  // namespace
 
 std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, int height,
-                                           bool debug, std::string& whyNot) {
+                                           bool debug, bool captureCursor, std::string& whyNot) {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) {
@@ -120,7 +123,7 @@ std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, 
         throw Error("glfw: cannot load the OpenGL functions (gladLoadGL failed)");
     }
     glfwSwapInterval(1);
-    return std::make_unique<GlfwContext>(window);
+    return std::make_unique<GlfwContext>(window, captureCursor);
 }
 
 }  // namespace pbr

@@ -14,6 +14,7 @@ GlObjectCensus takeGlObjectCensus() {
         census.renderbuffers += glIsRenderbuffer(name) ? 1 : 0;
         census.programs += glIsProgram(name) ? 1 : 0;
         census.shaders += glIsShader(name) ? 1 : 0;
+        census.samplers += glIsSampler(name) ? 1 : 0;
     }
     return census;
 }
@@ -32,6 +33,7 @@ std::string GlObjectCensus::describe() const {
     add(renderbuffers, "renderbuffer");
     add(programs, "program");
     add(shaders, "shader");
+    add(samplers, "sampler");
     return text;
 }
 

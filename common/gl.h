@@ -13,10 +13,10 @@ namespace pbr {
 // raw glGen* call shows too.
 struct GlObjectCensus {
     int textures = 0, buffers = 0, vertexArrays = 0, framebuffers = 0, renderbuffers = 0,
-        programs = 0, shaders = 0;
+        programs = 0, shaders = 0, samplers = 0;
     int total() const {
         return textures + buffers + vertexArrays + framebuffers + renderbuffers + programs +
-               shaders;
+               shaders + samplers;
     }
     std::string describe() const;  // "2 textures, 1 buffer"; empty when none
 };
@@ -76,6 +76,7 @@ using GlBuffer = GlObject<detail::NamedKind<glGenBuffers, glDeleteBuffers>>;
 using GlVertexArray = GlObject<detail::NamedKind<glGenVertexArrays, glDeleteVertexArrays>>;
 using GlFramebuffer = GlObject<detail::NamedKind<glGenFramebuffers, glDeleteFramebuffers>>;
 using GlRenderbuffer = GlObject<detail::NamedKind<glGenRenderbuffers, glDeleteRenderbuffers>>;
+using GlSampler = GlObject<detail::NamedKind<glGenSamplers, glDeleteSamplers>>;
 using GlProgram = GlObject<detail::ProgramKind>;
 
 // "GL_INVALID_OPERATION" for 0x0502, and so on.

@@ -11,7 +11,8 @@ namespace {
 // A recursive-descent reader of the JSON grammar that only checks: no values are kept.
 class JsonChecker {
 public:
-    explicit JsonChecker(std::string_view text) : text_(text) {}
+    explicit JsonChecker(std::string_view text, GltfExtensions* extensions = nullptr)
+        : text_(text), extensions_(extensions) {}
 
     std::optional<std::string> check() {
         if (text_.substr(0, 3) == "\xEF\xBB\xBF") at_ = 3;  // a byte-order mark, tolerated
@@ -84,12 +85,19 @@ private:
         for (;;) {
             skipSpace();
             if (atEnd() || peek() != '"') return fail("expected a name in quotes", "an object");
+            const size_t keyStart = at_ + 1;
             if (!string()) return false;
+            const std::string_view key = text_.substr(keyStart, at_ - 1 - keyStart);
             skipSpace();
             if (atEnd() || peek() != ':') return fail("expected ':'", "an object");
             ++at_;
             skipSpace();
+            const size_t valueStart = at_;
             if (!value(depth + 1)) return false;
+            if (extensions_ && depth == 0) {
+                if (key == "extensionsUsed") extensions_->used = strings(valueStart);
+                if (key == "extensionsRequired") extensions_->required = strings(valueStart);
+            }
             skipSpace();
             if (atEnd() || (peek() != ',' && peek() != '}'))
                 return fail("expected ',' or '}'", "an object");
@@ -137,6 +145,19 @@ private:
         return fail("", "a string");
     }
 
+    // The strings of the (checked) value that starts at `from` and ends here, as written: the
+    // names of glTF's extension lists need no unescaping.
+    std::vector<std::string> strings(size_t from) const {
+        std::vector<std::string> out;
+        for (size_t i = from; i < at_; ++i) {
+            if (text_[i] != '"') continue;
+            const size_t end = text_.find('"', i + 1);
+            out.emplace_back(text_.substr(i + 1, end - i - 1));
+            i = end;
+        }
+        return out;
+    }
+
     bool digits() {
         const size_t start = at_;
         while (!atEnd() && peek() >= '0' && peek() <= '9') ++at_;
@@ -176,6 +197,7 @@ private:
     }
 
     std::string_view text_;
+    GltfExtensions* extensions_;
     size_t at_ = 0;
     std::string error_;
 };
@@ -229,6 +251,17 @@ std::optional<std::string> glbError(std::string_view bytes) {
 
 std::optional<std::string> jsonSyntaxError(std::string_view text) {
     return JsonChecker(text).check();
+}
+
+GltfExtensions gltfExtensions(std::string_view bytes) {
+    std::string_view json = bytes;
+    if (bytes.substr(0, 4) == "glTF") {
+        if (glbError(bytes) || bytes.size() < 20) return {};
+        json = bytes.substr(20, read32(bytes, 12));
+    }
+    GltfExtensions extensions;
+    if (JsonChecker(json, &extensions).check()) return {};
+    return extensions;
 }
 
 std::optional<std::string> gltfContainerError(std::string_view bytes) {

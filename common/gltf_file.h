@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace pbr {
 
@@ -17,5 +18,12 @@ std::optional<std::string> jsonSyntaxError(std::string_view text);
 // Why the bytes of a glTF file (.gltf text or .glb binary, told apart by the GLB magic) cannot be
 // a glTF asset, or nullopt when the container is sound (the contents are Assimp's to judge).
 std::optional<std::string> gltfContainerError(std::string_view bytes);
+
+// The names in a glTF file's top-level "extensionsUsed" and "extensionsRequired" lists (empty
+// when absent, or when the container is not sound).
+struct GltfExtensions {
+    std::vector<std::string> used, required;
+};
+GltfExtensions gltfExtensions(std::string_view bytes);
 
 }  // namespace pbr

@@ -124,6 +124,13 @@ void useIblMaps(Shader& shader, const TextureCube& irradiance, const TextureCube
 
 Skybox::Skybox() : shader_("ibl/skybox.vert", "ibl/skybox.frag"), cube_(pbr::cube()) {
     shader_.set("environmentMap", 0);
+    shader_.set("toneMapper", -1);
+    shader_.set("exposure", 1.0f);
+}
+
+void Skybox::setToneMapping(int toneMapper, float exposure) {
+    shader_.set("toneMapper", toneMapper);
+    shader_.set("exposure", exposure);
 }
 
 void Skybox::draw(const TextureCube& environment, const glm::mat4& view,

@@ -54,6 +54,10 @@ class Skybox {
 public:
     Skybox();
     void draw(const TextureCube& environment, const glm::mat4& view, const glm::mat4& projection);
+    // The glTF samples' output: exposure and one of tonemap.glsl's tone mappers, written linear
+    // for an sRGB render target. By default the sky is written as 04-06 write their spheres
+    // (Reinhard, then gamma 1/2.2).
+    void setToneMapping(int toneMapper, float exposure);
 
 private:
     Shader shader_;

@@ -121,16 +121,19 @@ GpuMesh::GpuMesh(const MeshData& data)
       mode_(data.primitive == Primitive::TriangleStrip ? GL_TRIANGLE_STRIP : GL_TRIANGLES) {
     const size_t count = data.positions.size();
     if (data.normals.size() != count || data.uvs.size() != count || data.tangents.size() != count ||
-        (!data.colors.empty() && data.colors.size() != count)) {
+        (!data.colors.empty() && data.colors.size() != count) ||
+        (!data.uvs1.empty() && data.uvs1.size() != count)) {
         throw Error("GpuMesh: attribute arrays differ in length");
     }
     for (std::uint32_t index : data.indices) {
         if (index >= count) throw Error("GpuMesh: index out of range");
     }
-    // Interleaved: position, uv, normal, tangent (12 floats a vertex), and the colour (4 more)
-    // only when the mesh has one: the grid samples are vertex-bound, every byte counts.
+    // Interleaved: position, uv, normal, tangent (12 floats a vertex), then the colour (4 more)
+    // and the second uv set (2 more) only when the mesh has them: the grid samples are
+    // vertex-bound, every byte counts.
     hasColors_ = !data.colors.empty();
-    const size_t stride = hasColors_ ? 16 : 12;
+    hasUv1_ = !data.uvs1.empty();
+    const size_t stride = 12 + (hasColors_ ? 4 : 0) + (hasUv1_ ? 2 : 0);
     std::vector<float> vertices;
     vertices.reserve(count * stride);
     for (size_t i = 0; i < count; ++i) {
@@ -144,6 +147,7 @@ GpuMesh::GpuMesh(const MeshData& data)
             const glm::vec4& c = data.colors[i];
             vertices.insert(vertices.end(), {c.r, c.g, c.b, c.a});
         }
+        if (hasUv1_) vertices.insert(vertices.end(), {data.uvs1[i].x, data.uvs1[i].y});
     }
     glBindVertexArray(vao_.id());
     glBindBuffer(GL_ARRAY_BUFFER, vertices_.id());
@@ -162,12 +166,14 @@ GpuMesh::GpuMesh(const MeshData& data)
     attribute(kAttribNormal, 3, 5);
     attribute(kAttribTangent, 4, 8);
     if (hasColors_) attribute(kAttribColor, 4, 12);
+    if (hasUv1_) attribute(kAttribUv1, 2, hasColors_ ? 16 : 12);
     glBindVertexArray(0);
 }
 
 void GpuMesh::draw() const {
     // Without a colour array the shader reads the current generic value: make it white.
     if (!hasColors_) glVertexAttrib4f(kAttribColor, 1.0f, 1.0f, 1.0f, 1.0f);
+    if (!hasUv1_) glVertexAttrib2f(kAttribUv1, 0.0f, 0.0f);  // glTF: a missing set reads (0, 0)
     glBindVertexArray(vao_.id());
     glDrawElements(mode_, indexCount_, GL_UNSIGNED_INT, nullptr);
 }

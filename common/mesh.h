@@ -22,6 +22,7 @@ struct MeshData {
     // uploads images top row first (row 0 at v = 0), as the tutorial does.
     std::vector<glm::vec4> tangents;
     std::vector<glm::vec4> colors;  // linear RGBA per vertex; empty means white
+    std::vector<glm::vec2> uvs1;    // a second texture coordinate set (glTF TEXCOORD_1); may be empty
     std::vector<std::uint32_t> indices;
     Primitive primitive = Primitive::Triangles;
 };
@@ -48,6 +49,7 @@ enum VertexAttribute : GLuint {
     kAttribNormal = 2,
     kAttribTangent = 3,
     kAttribColor = 4,
+    kAttribUv1 = 5,
 };
 
 class GpuMesh {
@@ -63,6 +65,7 @@ private:
     GLsizei indexCount_ = 0;
     GLenum mode_ = GL_TRIANGLES;
     bool hasColors_ = false;
+    bool hasUv1_ = false;
 };
 
 }  // namespace pbr

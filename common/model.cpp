@@ -6,6 +6,7 @@
 
 #include <stb_image.h>
 #include <assimp/Importer.hpp>
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <functional>
@@ -41,6 +42,7 @@ struct Reader {
             return ref;
         }
         ref.uvSet = int(uvIndex);
+        readSampler(material, type, ref);
         const std::string name = path.C_Str();
         if (!name.empty() && name[0] == '*') {
             const int index = std::atoi(name.c_str() + 1);
@@ -62,6 +64,38 @@ struct Reader {
             throw Error(where + "texture '" + name + "' not found (" + displayPath(ref.file) + ")");
         }
         return ref;
+    }
+
+    // The glTF sampler and KHR_texture_transform of a texture, as Assimp 5.2 reports them (see
+    // DESIGN.md, "glTF through Assimp 5.2").
+    static void readSampler(const aiMaterial* material, aiTextureType type, TextureRef& ref) {
+        auto wrap = [](int mode) {
+            return mode == aiTextureMapMode_Clamp ? 33071 : mode == aiTextureMapMode_Mirror ? 33648
+                                                                                           : 10497;
+        };
+        int mode = aiTextureMapMode_Wrap;
+        if (material->Get(AI_MATKEY_MAPPINGMODE_U(type, 0), mode) == AI_SUCCESS)
+            ref.wrapS = wrap(mode);
+        mode = aiTextureMapMode_Wrap;
+        if (material->Get(AI_MATKEY_MAPPINGMODE_V(type, 0), mode) == AI_SUCCESS)
+            ref.wrapT = wrap(mode);
+        material->Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0), ref.magFilter);
+        material->Get(AI_MATKEY_GLTF_MAPPINGFILTER_MIN(type, 0), ref.minFilter);
+        aiUVTransform uv;
+        if (material->Get(AI_MATKEY_UVTRANSFORM(type, 0), uv) == AI_SUCCESS) {
+            // Assimp turns the extension's offset, rotation and scale into its own convention
+            // (rotation negated, about the image centre, for its flipped v); undo that to get
+            // glTF's values back. Measured on Assimp 5.2: with R the glTF rotation,
+            //   translation.x = offset.x + S.x / 2 (1 - cos R + sin R)
+            //   translation.y = S.y / 2 (sin R + cos R - 1) + 1 - S.y - offset.y
+            const float rotation = -uv.mRotation;
+            const float c = std::cos(rotation), s = std::sin(rotation);
+            const glm::vec2 scale(uv.mScaling.x, uv.mScaling.y);
+            const glm::vec2 offset(uv.mTranslation.x - 0.5f * scale.x * (1.0f - c + s),
+                                   0.5f * scale.y * (s + c - 1.0f) + 1.0f - scale.y -
+                                       uv.mTranslation.y);
+            ref.transform = textureTransform(offset, rotation, scale);
+        }
     }
 
     Material material(const aiMaterial* m) {
@@ -140,6 +174,8 @@ struct Reader {
                 uv = {in->mTextureCoords[0][i].x, 1.0f - in->mTextureCoords[0][i].y};
             }
             out.uvs.push_back(uv);
+            if (in->mTextureCoords[1])
+                out.uvs1.push_back({in->mTextureCoords[1][i].x, 1.0f - in->mTextureCoords[1][i].y});
             glm::vec4 tangent(1.0f, 0.0f, 0.0f, 1.0f);
             if (in->mTangents && in->mBitangents) {
                 const glm::vec3 t(in->mTangents[i].x, in->mTangents[i].y, in->mTangents[i].z);
@@ -193,7 +229,81 @@ struct Reader {
     }
 };
 
+// The global transform of a node: its own and its parents'.
+glm::mat4 globalTransform(const aiNode* node) {
+    glm::mat4 transform(1.0f);
+    for (int depth = 0; node && depth < 256; node = node->mParent, ++depth)
+        transform = toGlm(node->mTransformation) * transform;
+    return transform;
+}
+
+// KHR_lights_punctual: Assimp hands each light over at its node's origin, shining down the
+// node's -Z, with colour x intensity as its diffuse colour; the range is node metadata.
+std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& where) {
+    std::vector<PunctualLight> lights;
+    for (unsigned i = 0; i < scene->mNumLights; ++i) {
+        const aiLight* in = scene->mLights[i];
+        PunctualLight light;
+        light.name = in->mName.C_Str();
+        switch (in->mType) {
+            case aiLightSource_DIRECTIONAL: light.type = PunctualLight::Type::Directional; break;
+            case aiLightSource_POINT: light.type = PunctualLight::Type::Point; break;
+            case aiLightSource_SPOT: light.type = PunctualLight::Type::Spot; break;
+            default: continue;
+        }
+        light.color = {in->mColorDiffuse.r, in->mColorDiffuse.g, in->mColorDiffuse.b};
+        glm::mat4 transform(1.0f);
+        const aiNode* node = scene->mRootNode->FindNode(in->mName);
+        if (node) {
+            transform = globalTransform(node);
+            float range = 0.0f;
+            if (node->mMetaData && node->mMetaData->Get("PBR_LightRange", range)) light.range = range;
+        }
+        const glm::vec3 position(in->mPosition.x, in->mPosition.y, in->mPosition.z);
+        const glm::vec3 direction(in->mDirection.x, in->mDirection.y, in->mDirection.z);
+        light.position = glm::vec3(transform * glm::vec4(position, 1.0f));
+        // a point light shines every way (Assimp gives it no direction)
+        light.direction = glm::mat3(transform) * (light.type == PunctualLight::Type::Point
+                                                      ? glm::vec3(0.0f, 0.0f, -1.0f)
+                                                      : direction);
+        const float length = glm::length(light.direction);
+        if (!std::isfinite(length) || length < 1e-12f ||
+            !std::isfinite(glm::dot(light.position, light.position)) ||
+            !std::isfinite(glm::dot(light.color, light.color))) {
+            throw Error(where + "light '" + light.name + "' has a broken transform or colour");
+        }
+        light.direction /= length;
+        if (light.type == PunctualLight::Type::Spot) {
+            light.innerConeAngle = in->mAngleInnerCone;
+            light.outerConeAngle = in->mAngleOuterCone;
+        }
+        lights.push_back(light);
+    }
+    return lights;
+}
+
 }  // namespace
+
+glm::mat3 textureTransform(const glm::vec2& offset, float rotation, const glm::vec2& scale) {
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    const glm::mat3 translation(1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, offset.x, offset.y, 1.0f);
+    const glm::mat3 rotate(c, s, 0.0f, -s, c, 0.0f, 0.0f, 0.0f, 1.0f);
+    const glm::mat3 scaling(scale.x, 0.0f, 0.0f, 0.0f, scale.y, 0.0f, 0.0f, 0.0f, 1.0f);
+    return translation * rotate * scaling;
+}
+
+std::vector<std::string> extensionsNotDrawn(const Model& model,
+                                            const std::vector<std::string>& drawn, bool required) {
+    std::vector<std::string> out;
+    for (const std::string& name : required ? model.extensionsRequired : model.extensionsUsed) {
+        const bool isRequired = std::find(model.extensionsRequired.begin(),
+                                          model.extensionsRequired.end(), name) !=
+                                model.extensionsRequired.end();
+        if (!required && isRequired) continue;  // listed with the required ones
+        if (std::find(drawn.begin(), drawn.end(), name) == drawn.end()) out.push_back(name);
+    }
+    return out;
+}
 
 Model loadModel(const fs::path& file) {
     std::error_code ec;
@@ -202,6 +312,7 @@ Model loadModel(const fs::path& file) {
     if (fs::file_size(file, ec) == 0) throw Error(displayPath(file) + ": empty file");
     const std::string where = displayPath(file) + ": ";
     bool isGltf = false;
+    std::vector<std::string> extensionsUsed, extensionsRequired;
     {
         // Assimp's answer to a broken glTF container is "no suitable reader": say what is wrong.
         std::string extension = file.extension().string();
@@ -215,6 +326,11 @@ Model loadModel(const fs::path& file) {
             throw Error(where + "not a binary glTF file (it does not start with 'glTF')");
         }
         isGltf = bytes.starts_with("glTF") || json;
+        if (isGltf) {
+            GltfExtensions extensions = gltfExtensions(bytes);
+            extensionsUsed = std::move(extensions.used);
+            extensionsRequired = std::move(extensions.required);
+        }
     }
 
     Assimp::Importer importer;
@@ -236,6 +352,9 @@ Model loadModel(const fs::path& file) {
 
     Model model;
     model.file = fs::absolute(file);
+    model.extensionsUsed = std::move(extensionsUsed);
+    model.extensionsRequired = std::move(extensionsRequired);
+    model.lights = readLights(scene, where);
     Reader reader{scene, model, where};
     for (unsigned i = 0; i < scene->mNumTextures; ++i) {
         const aiTexture* t = scene->mTextures[i];
@@ -301,7 +420,7 @@ Image loadTextureImage(const Model& model, const TextureRef& ref, int wantChanne
     return decodeImage(embedded.bytes, what, wantChannels);
 }
 
-GpuModel::GpuModel(const Model& model, TextureFilter filter) {
+GpuModel::GpuModel(const Model& model) {
     auto upload = [&](const TextureRef& ref, ColorSpace colorSpace) {
         if (!ref.present() || textures_.count({ref, colorSpace})) return;
         Image image;
@@ -311,7 +430,17 @@ GpuModel::GpuModel(const Model& model, TextureFilter filter) {
             if (ref.embedded >= 0) throw;  // the message names the model already
             throw Error(displayPath(model.file) + ": texture " + e.what());
         }
-        textures_[{ref, colorSpace}] = std::make_unique<Texture2D>(image, colorSpace, filter);
+        textures_[{ref, colorSpace}] = std::make_unique<Texture2D>(image, colorSpace);
+        const std::tuple key{ref.wrapS, ref.wrapT, ref.magFilter, ref.minFilter};
+        if (samplers_.count(key)) return;
+        GlSampler sampler;
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, ref.wrapS);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, ref.wrapT);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER,
+                            ref.magFilter ? ref.magFilter : GL_LINEAR);
+        glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER,
+                            ref.minFilter ? ref.minFilter : GL_LINEAR_MIPMAP_LINEAR);
+        samplers_.emplace(key, std::move(sampler));
     };
     for (const Material& m : model.materials) {
         upload(m.baseColorTexture, ColorSpace::Srgb);
@@ -322,13 +451,32 @@ GpuModel::GpuModel(const Model& model, TextureFilter filter) {
         upload(m.occlusionTexture, ColorSpace::Linear);
     }
     for (const ModelPrimitive& p : model.primitives) {
-        primitives_.push_back({GpuMesh(p.mesh), model.materials[size_t(p.material)], p.transform});
+        glm::vec3 low(INFINITY), high(-INFINITY);
+        for (const glm::vec3& position : p.mesh.positions) {
+            low = glm::min(low, position);
+            high = glm::max(high, position);
+        }
+        primitives_.push_back({GpuMesh(p.mesh), model.materials[size_t(p.material)], p.transform,
+                               0.5f * (low + high)});
     }
 }
 
 const Texture2D* GpuModel::texture(const TextureRef& ref, ColorSpace colorSpace) const {
     auto found = textures_.find({ref, colorSpace});
     return found == textures_.end() ? nullptr : found->second.get();
+}
+
+bool GpuModel::bindTexture(const TextureRef& ref, ColorSpace colorSpace, int unit,
+                           const Texture2D& fallback) const {
+    const Texture2D* own = texture(ref, colorSpace);
+    auto sampler = samplers_.find({ref.wrapS, ref.wrapT, ref.magFilter, ref.minFilter});
+    glBindSampler(GLuint(unit), own && sampler != samplers_.end() ? sampler->second.id() : 0);
+    (own ? own : &fallback)->bind(unit);
+    return own != nullptr;
+}
+
+void GpuModel::unbindSamplers(int count) {
+    for (int unit = 0; unit < count; ++unit) glBindSampler(GLuint(unit), 0);
 }
 
 }  // namespace pbr

@@ -13,6 +13,7 @@
 
 #include "image.h"
 #include "mesh.h"
+#include "punctual_light.h"
 #include "texture.h"
 
 namespace pbr {
@@ -22,7 +23,15 @@ namespace pbr {
 struct TextureRef {
     std::filesystem::path file;  // absolute; empty when embedded or absent
     int embedded = -1;           // index into Model::embeddedImages, or -1
-    int uvSet = 0;
+    int uvSet = 0;  // TEXCOORD_0 or TEXCOORD_1
+    // The glTF sampler, in its own numbers (which are GL's enums): wrap 10497 REPEAT, 33071
+    // CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT; filters 9728 NEAREST, 9729 LINEAR, 9984-9987 the
+    // mipmapped ones, 0 where the file leaves them to the renderer.
+    int wrapS = 10497, wrapT = 10497;
+    int magFilter = 0, minFilter = 0;
+    // KHR_texture_transform as one matrix on glTF's uv (origin at the image's top left):
+    // uv' = (transform * vec3(uv, 1)).xy = translation x rotation x scale, as the extension has it.
+    glm::mat3 transform{1.0f};
     bool present() const { return embedded >= 0 || !file.empty(); }
     bool operator<(const TextureRef& o) const {
         return std::tie(file, embedded) < std::tie(o.file, o.embedded);
@@ -78,7 +87,18 @@ struct Model {
     std::vector<EmbeddedImage> embeddedImages;
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // of all primitives, in world space
     int primitivesWithoutMaterial = 0;           // drawn with glTF's default material
+    std::vector<PunctualLight> lights;           // KHR_lights_punctual, placed by their nodes
+    // The file's top-level extension lists (glTF only), so a renderer can say what it ignores.
+    std::vector<std::string> extensionsUsed, extensionsRequired;
 };
+
+// KHR_texture_transform's matrix: translation x rotation x scale (the extension's order).
+glm::mat3 textureTransform(const glm::vec2& offset, float rotation, const glm::vec2& scale);
+
+// The extensions a glTF file uses (or, `required`, requires) that are not in `drawn`: what a
+// renderer that draws `drawn` should warn about.
+std::vector<std::string> extensionsNotDrawn(const Model& model,
+                                            const std::vector<std::string>& drawn, bool required);
 
 // Loads and checks a model. Throws Error("<file>: <reason>") for anything that cannot be drawn
 // sanely: unreadable files, Assimp's refusals, no triangles, non-finite positions, indices out of
@@ -93,21 +113,31 @@ Image loadTextureImage(const Model& model, const TextureRef& ref, int wantChanne
 // gpu(loadModel(file))` is fine.
 class GpuModel {
 public:
-    explicit GpuModel(const Model& model, TextureFilter filter = TextureFilter::Trilinear);
+    explicit GpuModel(const Model& model);
 
     struct Primitive {
         GpuMesh mesh;
         Material material;
         glm::mat4 transform;
+        glm::vec3 centre;  // of the mesh's bounds, in its own space (for sorting)
     };
     const std::vector<Primitive>& primitives() const { return primitives_; }
     // The texture for a reference, or nullptr when absent. Base colour, emissive and
     // specular-glossiness textures are sRGB, the others linear.
     const Texture2D* texture(const TextureRef& ref, ColorSpace colorSpace) const;
+    // Binds a reference's texture to `unit` with a sampler object for its glTF sampler (wrap
+    // and filters; the renderer's choice, trilinear, where the file leaves a filter open), or
+    // `fallback` with GL's default sampling when the reference is absent. Returns whether the
+    // reference's own texture was bound. unbindSamplers() gives units 0..count-1 back to the
+    // textures' own parameters.
+    bool bindTexture(const TextureRef& ref, ColorSpace colorSpace, int unit,
+                     const Texture2D& fallback) const;
+    static void unbindSamplers(int count);
 
 private:
     std::vector<Primitive> primitives_;
     std::map<std::pair<TextureRef, ColorSpace>, std::unique_ptr<Texture2D>> textures_;
+    std::map<std::tuple<int, int, int, int>, GlSampler> samplers_;  // wrap s, t, mag, min
 };
 
 }  // namespace pbr

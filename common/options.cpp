@@ -302,7 +302,8 @@ void usageLine(std::ostringstream& out, const std::string& left, const std::stri
 
 }  // namespace
 
-std::string usageText(const std::string& program, std::span<const FlagSpec> sampleFlags) {
+std::string usageText(const std::string& program, std::span<const FlagSpec> sampleFlags,
+                      bool orbitCamera) {
     std::ostringstream out;
     out << "usage: " << program << " [flags]\n\nflags every sample takes:\n";
     for (const CommonFlag& flag : kCommonFlags) {
@@ -321,8 +322,14 @@ std::string usageText(const std::string& program, std::span<const FlagSpec> samp
     for (const EnvironmentVariable& variable : environmentVariables()) {
         usageLine(out, variable.name, variable.meaning);
     }
-    out << "\nkeys in a window: WASD move, mouse look, scroll zoom, F12 screenshot, R reload "
-           "shaders, Esc quit\n";
+    if (orbitCamera) {
+        out << "\nthis sample's camera orbits the model's centre: --camera takes x,y,z only\n"
+               "keys in a window: drag (left button) orbit, scroll dolly, F12 screenshot, R "
+               "reload shaders, Esc quit\n";
+    } else {
+        out << "\nkeys in a window: WASD move, mouse look, scroll zoom, F12 screenshot, R reload "
+               "shaders, Esc quit\n";
+    }
     return out.str();
 }
 

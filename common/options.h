@@ -67,7 +67,10 @@ Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec
 
 // The usage text: the common flags and the sample's own in two aligned columns, the environment
 // variables the suite reads, and the keys.
-std::string usageText(const std::string& program, std::span<const FlagSpec> sampleFlags);
+// `orbitCamera`: the sample looks at a model through an orbit camera (07, 08): --camera takes
+// x,y,z only, and the keys differ.
+std::string usageText(const std::string& program, std::span<const FlagSpec> sampleFlags,
+                      bool orbitCamera = false);
 
 // Helpers for flag values, throwing UsageError naming the flag when the value is bad.
 int parseIntFlag(const std::string& flag, const std::string& value, int min, int max);

@@ -9,13 +9,13 @@
 //   bottom right  a quad: all three at once (a tinted factor, a colour gradient, the texture)
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "error.h"
+#include "gltf_writer.h"
 #include "image.h"
 #include "output.h"
 
@@ -23,22 +23,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Vertex {
-    float position[3];
-    float normal[3];
-    float uv[2];
-    float color[4];
-};
-
 struct Mesh {
     std::string name;
-    std::vector<Vertex> vertices;
-    std::vector<std::uint16_t> indices;
-    bool colors = false, uvs = false;
+    pbr::MeshData data;  // uvs and colours empty where the object has none
 };
 
 Mesh rgbCube(float half) {
-    Mesh mesh{"rgb_cube", {}, {}, true, false};
+    Mesh mesh{"rgb_cube", {}};
     const float faces[6][3][3] = {
         // normal, u axis, v axis (u x v = normal: counter-clockwise outside)
         {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
@@ -46,44 +37,43 @@ Mesh rgbCube(float half) {
         {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
     };
     for (const auto& face : faces) {
-        const auto base = std::uint16_t(mesh.vertices.size());
+        const auto base = std::uint32_t(mesh.data.positions.size());
         for (const auto& corner : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
-            Vertex v{};
+            glm::vec3 position, normal;
+            glm::vec4 color(1.0f);
             for (int c = 0; c < 3; ++c) {
                 const float p = face[0][c] + face[1][c] * float(corner.first) +
                                 face[2][c] * float(corner.second);
-                v.position[c] = p * half;
-                v.normal[c] = face[0][c];
-                v.color[c] = p > 0.0f ? 1.0f : 0.0f;  // the corner's position as its colour
+                position[c] = p * half;
+                normal[c] = face[0][c];
+                color[c] = p > 0.0f ? 1.0f : 0.0f;  // the corner's position as its colour
             }
-            v.color[3] = 1.0f;
-            mesh.vertices.push_back(v);
+            mesh.data.positions.push_back(position);
+            mesh.data.normals.push_back(normal);
+            mesh.data.colors.push_back(color);
         }
-        for (int i : {0, 1, 2, 0, 2, 3}) mesh.indices.push_back(std::uint16_t(base + i));
+        for (std::uint32_t i : {0, 1, 2, 0, 2, 3}) mesh.data.indices.push_back(base + i);
     }
     return mesh;
 }
 
 Mesh sphere(float radius, int columns, int rows) {
-    Mesh mesh{"factor_sphere", {}, {}, false, false};
+    Mesh mesh{"factor_sphere", {}};
     for (int y = 0; y <= rows; ++y) {
         for (int x = 0; x <= columns; ++x) {
             const float theta = float(y) / float(rows) * float(M_PI),
                         phi = float(x) / float(columns) * 2.0f * float(M_PI);
-            const float n[3] = {std::cos(phi) * std::sin(theta), std::cos(theta),
-                                std::sin(phi) * std::sin(theta)};
-            Vertex v{};
-            for (int c = 0; c < 3; ++c) {
-                v.position[c] = n[c] * radius;
-                v.normal[c] = n[c];
-            }
-            mesh.vertices.push_back(v);
+            const glm::vec3 n(std::cos(phi) * std::sin(theta), std::cos(theta),
+                              std::sin(phi) * std::sin(theta));
+            mesh.data.positions.push_back(n * radius);
+            mesh.data.normals.push_back(n);
         }
     }
     for (int y = 0; y < rows; ++y) {
         for (int x = 0; x < columns; ++x) {
             const int a = y * (columns + 1) + x, b = a + columns + 1;
-            for (int i : {a, a + 1, b, a + 1, b + 1, b}) mesh.indices.push_back(std::uint16_t(i));
+            for (int i : {a, a + 1, b, a + 1, b + 1, b})
+                mesh.data.indices.push_back(std::uint32_t(i));
         }
     }
     return mesh;
@@ -91,21 +81,17 @@ Mesh sphere(float radius, int columns, int rows) {
 
 // A square in the XY plane facing +Z; uv (0,0) at the top left, as glTF has it.
 Mesh quad(const std::string& name, float half, bool gradient) {
-    Mesh mesh{name, {}, {}, gradient, true};
+    Mesh mesh{name, {}};
     const float corners[4][2] = {{-1, 1}, {1, 1}, {1, -1}, {-1, -1}};  // top left, clockwise
-    const float colors[4][4] = {
+    const glm::vec4 colors[4] = {
         {1, 1, 1, 1}, {1, 0.45f, 0.45f, 1}, {0.45f, 1, 0.45f, 1}, {0.45f, 0.45f, 1, 1}};
     for (int i = 0; i < 4; ++i) {
-        Vertex v{};
-        v.position[0] = corners[i][0] * half;
-        v.position[1] = corners[i][1] * half;
-        v.normal[2] = 1.0f;
-        v.uv[0] = corners[i][0] * 0.5f + 0.5f;
-        v.uv[1] = 0.5f - corners[i][1] * 0.5f;
-        std::memcpy(v.color, colors[i], sizeof v.color);
-        mesh.vertices.push_back(v);
+        mesh.data.positions.push_back({corners[i][0] * half, corners[i][1] * half, 0.0f});
+        mesh.data.normals.push_back({0.0f, 0.0f, 1.0f});
+        mesh.data.uvs.push_back({corners[i][0] * 0.5f + 0.5f, 0.5f - corners[i][1] * 0.5f});
+        if (gradient) mesh.data.colors.push_back(colors[i]);
     }
-    mesh.indices = {0, 3, 2, 0, 2, 1};  // counter-clockwise seen from +Z
+    mesh.data.indices = {0, 3, 2, 0, 2, 1};  // counter-clockwise seen from +Z
     return mesh;
 }
 
@@ -160,61 +146,12 @@ int main(int argc, char** argv) try {
          "all three"},
     };
 
-    std::string bin;
-    std::ostringstream views, accessors, meshes, nodes, materials;
-    int view = 0, accessor = 0;
-    auto addView = [&](const void* data, size_t bytes, int target) {
-        while (bin.size() % 4) bin += '\0';
-        views << (view ? "," : "") << "{\"buffer\":0,\"byteOffset\":" << bin.size()
-              << ",\"byteLength\":" << bytes << ",\"target\":" << target << "}";
-        bin.append(static_cast<const char*>(data), bytes);
-        return view++;
-    };
-    auto addAccessor = [&](int bufferView, int componentType, size_t count, const char* type,
-                           const std::string& extra) {
-        accessors << (accessor ? "," : "") << "{\"bufferView\":" << bufferView
-                  << ",\"componentType\":" << componentType << ",\"count\":" << count
-                  << ",\"type\":\"" << type << "\"" << extra << "}";
-        return accessor++;
-    };
+    pbr::gltf::Buffer buffer;
+    std::ostringstream meshes, nodes, materials;
     for (size_t i = 0; i < objects.size(); ++i) {
         const Object& o = objects[i];
-        std::vector<float> positions, normals, uvs, colors;
-        float lo[3] = {1e9f, 1e9f, 1e9f}, hi[3] = {-1e9f, -1e9f, -1e9f};
-        for (const Vertex& v : o.mesh.vertices) {
-            positions.insert(positions.end(), v.position, v.position + 3);
-            normals.insert(normals.end(), v.normal, v.normal + 3);
-            uvs.insert(uvs.end(), v.uv, v.uv + 2);
-            colors.insert(colors.end(), v.color, v.color + 4);
-            for (int c = 0; c < 3; ++c)
-                lo[c] = std::min(lo[c], v.position[c]), hi[c] = std::max(hi[c], v.position[c]);
-        }
-        std::ostringstream bounds;
-        bounds << ",\"min\":[" << lo[0] << "," << lo[1] << "," << lo[2] << "],\"max\":[" << hi[0]
-               << "," << hi[1] << "," << hi[2] << "]";
-        const size_t n = o.mesh.vertices.size();
-        const int pos = addAccessor(addView(positions.data(), positions.size() * 4, 34962), 5126, n,
-                                    "VEC3", bounds.str());
-        const int nrm =
-            addAccessor(addView(normals.data(), normals.size() * 4, 34962), 5126, n, "VEC3", "");
-        std::ostringstream attributes;
-        attributes << "\"POSITION\":" << pos << ",\"NORMAL\":" << nrm;
-        if (o.mesh.uvs) {
-            attributes << ",\"TEXCOORD_0\":"
-                       << addAccessor(addView(uvs.data(), uvs.size() * 4, 34962), 5126, n, "VEC2",
-                                      "");
-        }
-        if (o.mesh.colors) {
-            attributes << ",\"COLOR_0\":"
-                       << addAccessor(addView(colors.data(), colors.size() * 4, 34962), 5126, n,
-                                      "VEC4", "");
-        }
-        const int idx =
-            addAccessor(addView(o.mesh.indices.data(), o.mesh.indices.size() * 2, 34963), 5123,
-                        o.mesh.indices.size(), "SCALAR", "");
-        meshes << (i ? "," : "") << "{\"name\":\"" << o.mesh.name
-               << "\",\"primitives\":[{\"attributes\":{" << attributes.str()
-               << "},\"indices\":" << idx << ",\"material\":" << i << "}]}";
+        meshes << (i ? "," : "") << "{\"name\":\"" << o.mesh.name << "\",\"primitives\":["
+               << buffer.addPrimitive(o.mesh.data) << ",\"material\":" << i << "}]}";
         nodes << (i ? "," : "") << "{\"name\":\"" << o.mesh.name << "\",\"mesh\":" << i
               << ",\"translation\":[" << o.translation[0] << "," << o.translation[1] << ","
               << o.translation[2] << "]}";
@@ -226,24 +163,24 @@ int main(int argc, char** argv) try {
                   << "\"metallicFactor\":0,\"roughnessFactor\":0.9},\"extensions\":{\"KHR_"
                      "materials_unlit\":{}}}";
     }
-    while (bin.size() % 4) bin += '\0';
 
-    std::ostringstream json;
-    json << "{\n\"asset\":{\"version\":\"2.0\",\"generator\":\"pbr-samples "
-            "resources/models/make_unlit_showcase\"},\n"
-         << "\"extensionsUsed\":[\"KHR_materials_unlit\"],\n\"scene\":0,\n\"scenes\":[{\"nodes\":["
-            "0,1,2,3]}],\n"
-         << "\"nodes\":[" << nodes.str() << "],\n\"meshes\":[" << meshes.str()
-         << "],\n\"materials\":[" << materials.str() << "],\n"
-         << "\"textures\":[{\"source\":0,\"sampler\":0}],\n"
-         << "\"samplers\":[{\"magFilter\":9729,\"minFilter\":9987,\"wrapS\":33071,\"wrapT\":33071}]"
-            ",\n"
-         << "\"images\":[{\"uri\":\"unlit_showcase_texture.png\"}],\n"
-         << "\"buffers\":[{\"uri\":\"unlit_showcase.bin\",\"byteLength\":" << bin.size() << "}],\n"
-         << "\"bufferViews\":[" << views.str() << "],\n\"accessors\":[" << accessors.str()
-         << "]\n}\n";
-    pbr::writeFileAtomically(dir / "unlit_showcase.gltf", json.str());
-    pbr::writeFileAtomically(dir / "unlit_showcase.bin", bin);
+    std::vector<std::pair<std::string, std::string>> members = {
+        {"asset",
+         "{\"version\":\"2.0\",\"generator\":\"pbr-samples "
+         "resources/models/make_unlit_showcase\"}"},
+        {"extensionsUsed", "[\"KHR_materials_unlit\"]"},
+        {"scene", "0"},
+        {"scenes", "[{\"nodes\":[0,1,2,3]}]"},
+        {"nodes", "[" + nodes.str() + "]"},
+        {"meshes", "[" + meshes.str() + "]"},
+        {"materials", "[" + materials.str() + "]"},
+        {"textures", "[{\"source\":0,\"sampler\":0}]"},
+        {"samplers", "[{\"magFilter\":9729,\"minFilter\":9987,\"wrapS\":33071,\"wrapT\":33071}]"},
+        {"images", "[{\"uri\":\"unlit_showcase_texture.png\"}]"},
+    };
+    for (auto& member : buffer.members("unlit_showcase.bin")) members.push_back(member);
+    pbr::writeFileAtomically(dir / "unlit_showcase.gltf", pbr::gltf::document(members));
+    pbr::writeFileAtomically(dir / "unlit_showcase.bin", buffer.bytes());
     pbr::writePng(dir / "unlit_showcase_texture.png", texture());
     return 0;
 } catch (...) {

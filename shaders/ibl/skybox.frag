@@ -3,11 +3,16 @@ out vec4 FragColor;
 in vec3 WorldPos;
 
 uniform samplerCube environmentMap;
+uniform int toneMapper;  // -1: the text's output (04-06); else a TONEMAP_* with linear output
+uniform float exposure;
 
 #include "tonemap.glsl"
 
 void main()
 {
     vec3 envColor = textureLod(environmentMap, WorldPos, 0.0).rgb;
-    FragColor = vec4(gammaCorrect(reinhard(envColor)), 1.0);  // tone-mapped like the spheres
+    if (toneMapper < 0)
+        FragColor = vec4(gammaCorrect(reinhard(envColor)), 1.0);  // tone-mapped like the spheres
+    else
+        FragColor = vec4(toneMap(envColor, toneMapper, exposure), 1.0);
 }

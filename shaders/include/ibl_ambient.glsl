@@ -49,3 +49,18 @@ vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, 
     vec3 specular = prefilteredColor * (F * envBRDF.x + envBRDF.y);
     return (kD * diffuse + specular) * ao;
 }
+
+// The exact split sum for a material given as its diffuse colour c_diff and F0 (the glTF
+// samples): the lobe reflects E = F0 scale + bias of the environment, and the diffuse layer gets
+// what it leaves, 1 - E, the image-based counterpart of the direct light's 1 - F. For a metallic
+// 0 or 1 material this is the exactSplitSum form above. Occlusion is the caller's.
+vec3 ambientLightGltf(vec3 N, vec3 V, vec3 diffuseColor, vec3 F0, float roughness)
+{
+    float NdotV = clamp(dot(N, V), 0.0, 1.0);
+    vec3 R = reflect(-V, N);
+    vec3 irradiance = texture(irradianceMap, N).rgb;
+    vec3 prefilteredColor = textureLod(prefilterMap, R, roughness * prefilterMaxLod).rgb;
+    vec2 envBRDF = texture(brdfLUT, vec2(NdotV, roughness)).rg;
+    vec3 E = F0 * envBRDF.x + envBRDF.y;
+    return diffuseColor * irradiance * (1.0 - E) + prefilteredColor * E;
+}

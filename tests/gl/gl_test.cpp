@@ -23,6 +23,7 @@
 #include "support/mesh_hit.h"
 #include "support/process.h"
 #include "texture.h"
+#include "tonemap.h"
 
 namespace pbr {
 namespace {
@@ -643,6 +644,135 @@ void main() { FragColor = vec4(textureLod(map, normalize(mix(start, end, TexCoor
                 << "a jump along the path from (" << start.x << ", " << start.y << ", " << start.z
                 << ") at lod " << lod << ": a seam";
         }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glEnable(GL_DEPTH_TEST);
+    while (app.nextFrame()) {
+    }
+}
+
+// An orbit sample's App: view(), projection() and cameraPosition() are the fly camera's until
+// useOrbitCamera, then the orbit camera's, framing the bounds or starting where --camera x,y,z
+// says; --camera with yaw and pitch is a bad flag there, refused before any context exists.
+TEST(Gl, AnOrbitSampleFramesItsModelOrStartsAtCameraXyz) {
+    const fs::path dir = test::testOutputDir("gl_orbit");
+    auto orbitApp = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = appArguments(dir, extra);
+        std::vector<char*> argv;
+        for (std::string& arg : args) argv.push_back(arg.data());
+        return std::make_unique<App>(int(argv.size()), argv.data(),
+                                     AppConfig{.name = "gl_test", .orbitCamera = true});
+    };
+    const glm::vec3 min(-2.0f, 0.0f, -1.0f), max(2.0f, 3.0f, 1.0f), centre(0.0f, 1.5f, 0.0f);
+    {
+        const auto app = orbitApp({});
+        EXPECT_EQ(app->orbitCamera(), nullptr);
+        EXPECT_EQ(app->view(), app->camera().viewMatrix());
+        app->useOrbitCamera(min, max);
+        ASSERT_NE(app->orbitCamera(), nullptr);
+        const OrbitCamera expected = OrbitCamera::framing(min, max, app->aspect());
+        EXPECT_EQ(app->cameraPosition(), expected.position());
+        EXPECT_EQ(app->view(), expected.viewMatrix());
+        EXPECT_EQ(app->projection(), expected.projectionMatrix(app->aspect()));
+        while (app->nextFrame()) {
+        }
+    }
+    {
+        const auto app = orbitApp({"--camera", "1,2,30"});
+        app->useOrbitCamera(min, max);
+        const glm::vec3 eye = app->cameraPosition();
+        EXPECT_NEAR(eye.x, 1.0f, 1e-4f);
+        EXPECT_NEAR(eye.y, 2.0f, 1e-4f);
+        EXPECT_NEAR(eye.z, 30.0f, 1e-4f);
+        const glm::vec4 seen = app->view() * glm::vec4(centre, 1.0f);
+        EXPECT_NEAR(seen.x, 0.0f, 1e-4f);
+        EXPECT_NEAR(seen.y, 0.0f, 1e-4f);
+        while (app->nextFrame()) {
+        }
+    }
+    try {
+        orbitApp({"--camera", "1,2,30,-90,0"});
+        ADD_FAILURE() << "--camera with yaw and pitch was taken by an orbit sample";
+    } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find("--camera: "), std::string::npos) << e.what();
+    }
+    // A fly-camera sample cannot switch: its flags were checked for the fly camera.
+    App fly = makeApp(dir, {"--camera", "1,2,30,-90,0"});
+    EXPECT_THROW(fly.useOrbitCamera(min, max), Error);
+    EXPECT_EQ(fly.cameraPosition(), glm::vec3(1.0f, 2.0f, 30.0f));
+    while (fly.nextFrame()) {
+    }
+}
+
+// The GLSL tone mappers (shaders/include/tonemap.glsl's toneMap) against their CPU mirror
+// (pbr::cpu::toneMap): each input colour one column of a float target, each mapper one row (and a
+// row for an unknown mapper, which is none), at two exposures. The inputs cover black, greys up
+// to 1000, the Khronos Neutral toe (< 0.08) and knee (0.76), saturated and negative colours.
+// Within 1e-4, a fortieth of an 8-bit level (measured: 2e-7 on llvmpipe): 1/255 would let a
+// changed constant in the toe (6.25 -> 6, at most 0.4/255) through.
+TEST(Gl, ToneMappersMatchTheCpu) {
+    const fs::path dir = test::testOutputDir("gl_tonemap");
+    App app = makeApp(dir);
+    std::vector<glm::vec3> inputs = {
+        {0.0f, 0.0f, 0.0f},      {0.02f, 0.05f, 0.079f}, {0.04f, 0.2f, 0.5f}, {0.5f, 0.3f, 0.1f},
+        {0.79f, 0.4f, 0.2f},     {0.81f, 0.805f, 0.8f},  {1.0f, 0.0f, 0.0f},  {0.0f, 1.0f, 0.0f},
+        {0.0f, 0.0f, 1.0f},      {8.0f, 4.0f, 1.0f},     {0.3f, 50.0f, 6.0f}, {2.0f, 0.5f, 0.1f},
+        {0.8f, 0.2f, 0.05f},     {0.05f, 0.3f, 1.5f},    {-1.0f, 0.5f, 2.0f}, {-0.1f, -0.2f, -0.3f},
+        {1000.0f, 1.0f, 0.001f}, {0.18f, 0.18f, 0.18f}};
+    for (float grey = 0.001f; grey < 1000.0f; grey *= 1.6f) inputs.push_back(glm::vec3(grey));
+    const int count = int(inputs.size());
+    ASSERT_GE(count, 40);
+    constexpr int kUnknownMapper = 7;
+    const std::array<int, 5> mappers = {0, 1, 2, 3, kUnknownMapper};
+
+    Texture2D inputTexture(count, 1, GL_RGB32F);
+    glBindTexture(GL_TEXTURE_2D, inputTexture.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, count, 1, GL_RGB, GL_FLOAT, inputs.data());
+    const fs::path fragment = dir / "tonemap.frag";
+    writeFileAtomically(fragment, R"(#version 330 core
+#include "tonemap.glsl"
+out vec4 FragColor;
+uniform sampler2D inputs;
+uniform int mappers[5];
+uniform float exposure;
+void main()
+{
+    vec3 color = texelFetch(inputs, ivec2(gl_FragCoord.x, 0), 0).rgb;
+    FragColor = vec4(toneMap(color, mappers[int(gl_FragCoord.y)], exposure), 1.0);
+}
+)");
+    Shader shader(shaderDir() / "ibl/fullscreen.vert", fragment);
+    const TestTarget target(count, int(mappers.size()), GL_RGBA32F, false, "tone map target");
+    glDisable(GL_DEPTH_TEST);
+    shader.set("inputs", 0);
+    inputTexture.bind(0);
+    for (size_t row = 0; row < mappers.size(); ++row)
+        shader.set("mappers[" + std::to_string(row) + "]", mappers[row]);
+    const GpuMesh quad(pbr::quad());
+    for (const float exposure : {1.0f, 2.5f}) {
+        shader.set("exposure", exposure);
+        quad.draw();
+        std::vector<float> pixels(size_t(count) * mappers.size() * 4);
+        glReadPixels(0, 0, count, int(mappers.size()), GL_RGBA, GL_FLOAT, pixels.data());
+        double worst = 0.0;
+        for (size_t row = 0; row < mappers.size(); ++row) {
+            const auto mapper = mappers[row] == kUnknownMapper ? cpu::ToneMapper::None
+                                                               : cpu::ToneMapper(mappers[row]);
+            for (int column = 0; column < count; ++column) {
+                const glm::vec3 cpu = cpu::toneMap(inputs[size_t(column)], mapper, exposure);
+                for (int c = 0; c < 3; ++c) {
+                    const float gpu =
+                        pixels[(row * size_t(count) + size_t(column)) * 4 + size_t(c)];
+                    worst = std::max(worst, double(std::abs(gpu - cpu[c])));
+                    EXPECT_NEAR(gpu, cpu[c], 1e-4)
+                        << "mapper " << mappers[row] << ", exposure " << exposure << ", input ("
+                        << inputs[size_t(column)].r << ", " << inputs[size_t(column)].g << ", "
+                        << inputs[size_t(column)].b << "), channel " << c;
+                }
+            }
+        }
+        std::printf("exposure %.1f: largest difference GLSL - CPU %.2e\n", double(exposure), worst);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glEnable(GL_DEPTH_TEST);

@@ -19,6 +19,7 @@
 #include "model.h"
 #include "paths.h"
 #include "support/golden.h"
+#include "support/mesh_hit.h"
 
 namespace pbr::test {
 namespace {
@@ -57,29 +58,6 @@ TEST(Reference, GltfUnlit03IsFactorTimesVertexColourTimesTexel) {
                    glm::lookAt(framing.cameraPosition, framing.cameraPosition + glm::vec3(0, 0, -1),
                                glm::vec3(0, 1, 0))));
 
-    struct Triangle {
-        glm::dvec3 p[3];
-        glm::dvec4 color[3];
-        glm::dvec2 uv[3];
-        const Material* material;
-    };
-    std::vector<Triangle> triangles;
-    for (const ModelPrimitive& primitive : model.primitives) {
-        const glm::dmat4 m = glm::dmat4(framing.normalize * primitive.transform);
-        const MeshData& mesh = primitive.mesh;
-        for (size_t i = 0; i < mesh.indices.size(); i += 3) {
-            Triangle t{};
-            t.material = &model.materials[size_t(primitive.material)];
-            for (int k = 0; k < 3; ++k) {
-                const std::uint32_t v = mesh.indices[i + size_t(k)];
-                t.p[k] = glm::dvec3(m * glm::dvec4(glm::dvec3(mesh.positions[v]), 1.0));
-                t.color[k] = mesh.colors.empty() ? glm::dvec4(1.0) : glm::dvec4(mesh.colors[v]);
-                t.uv[k] = glm::dvec2(mesh.uvs[v]);
-            }
-            triangles.push_back(t);
-        }
-    }
-
     int compared = 0, textured = 0;
     double worst = 0.0;
     for (int py = 0; py < kHeight; py += 4) {
@@ -89,34 +67,13 @@ TEST(Reference, GltfUnlit03IsFactorTimesVertexColourTimesTexel) {
             const glm::dvec4 farPoint = toWorld * glm::dvec4(ndc, 1.0, 1.0);
             const glm::dvec3 origin = glm::dvec3(nearPoint) / nearPoint.w;
             const glm::dvec3 dir = glm::normalize(glm::dvec3(farPoint) / farPoint.w - origin);
-            // nearest hit (Moller-Trumbore)
-            double bestT = INFINITY;
-            const Triangle* hit = nullptr;
-            glm::dvec3 bary(0.0);
-            for (const Triangle& t : triangles) {
-                const glm::dvec3 e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
-                const glm::dvec3 q = glm::cross(dir, e2);
-                const double det = glm::dot(e1, q);
-                if (std::abs(det) < 1e-12) continue;
-                const glm::dvec3 s = origin - t.p[0];
-                const double u = glm::dot(s, q) / det;
-                const glm::dvec3 r = glm::cross(s, e1);
-                const double v = glm::dot(dir, r) / det;
-                const double dist = glm::dot(e2, r) / det;
-                if (u < 0 || v < 0 || u + v > 1 || dist <= 0 || dist >= bestT) continue;
-                bestT = dist;
-                hit = &t;
-                bary = {1.0 - u - v, u, v};
-            }
-            if (!hit || std::min({bary.x, bary.y, bary.z}) < 0.02) continue;
-            const Material& material = *hit->material;
-            glm::dvec4 color =
-                (bary.x * hit->color[0] + bary.y * hit->color[1] + bary.z * hit->color[2]) *
-                glm::dvec4(material.baseColorFactor);
+            const auto hit = hitModel(model, glm::dmat4(framing.normalize), origin, dir);
+            if (!hit || hit->minBarycentric < 0.02) continue;
+            const Material& material =
+                model.materials[size_t(model.primitives[size_t(hit->primitive)].material)];
+            glm::dvec4 color = hit->color * glm::dvec4(material.baseColorFactor);
             if (material.baseColorTexture.present()) {
-                const glm::dvec2 uv =
-                    bary.x * hit->uv[0] + bary.y * hit->uv[1] + bary.z * hit->uv[2];
-                const glm::dvec2 texel = uv * 128.0;
+                const glm::dvec2 texel = hit->uv0 * 128.0;
                 const glm::dvec2 inBlock = texel - 16.0 * glm::floor(texel / 16.0);
                 if (std::min(inBlock.x, inBlock.y) < 4.0 || std::max(inBlock.x, inBlock.y) > 12.0)
                     continue;

@@ -1,5 +1,6 @@
 #include "support/golden_cases.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "paths.h"
@@ -32,7 +33,22 @@ std::vector<GoldenCase> goldenCases() {
         {"05_ibl_specular", "05_ibl_specular"},
         {"05_ibl_specular_textured", "05_ibl_specular", {"--textured"}},
         {"06_brdf_lut", "06_brdf_lut", {}, 0.3},
+        {"07_gltf_metallic_roughness", "07_gltf_metallic_roughness"},
+        {"07_box_textured",
+         "07_gltf_metallic_roughness",
+         {"--model", (kAssimpGltf / "BoxTextured-glTF/BoxTextured.gltf").string(), "--size",
+          "480x270", "--camera", "1.2,0.9,1.6"},
+         0.1,
+         {},
+         true},
     };
+    // The four tone mappers on the showcase, side by side in 07's README.
+    for (const char* mapper : {"khronos-neutral", "aces", "reinhard", "none"}) {
+        std::string name = std::string("07_tonemap_") + mapper;
+        std::replace(name.begin(), name.end(), '-', '_');
+        cases.push_back({name, "07_gltf_metallic_roughness",
+                         {"--tonemap", mapper, "--size", "480x270", "--camera", "0,2.2,5.5"}});
+    }
     // The other four material sets, each on the tutorial's close-up view, at a small size.
     for (const char* set : {"gold", "grass", "plastic", "wall"}) {
         cases.push_back({std::string("02_") + set,

@@ -83,6 +83,60 @@ std::optional<MeshHit> hitUvSphere(const MeshData& sphere, int xSegments, int yS
     return best;
 }
 
+std::optional<ModelHit> hitModel(const Model& model, const glm::dmat4& world,
+                                 const glm::dvec3& origin, const glm::dvec3& direction) {
+    std::optional<ModelHit> best;
+    for (size_t index = 0; index < model.primitives.size(); ++index) {
+        const ModelPrimitive& primitive = model.primitives[index];
+        const MeshData& mesh = primitive.mesh;
+        const glm::dmat4 m = world * glm::dmat4(primitive.transform);
+        // in the primitive's own space, the ray unnormalised so distances agree
+        const glm::dmat4 inverse = glm::inverse(m);
+        const glm::dvec3 o = glm::dvec3(inverse * glm::dvec4(origin, 1.0));
+        const glm::dvec3 d = glm::dvec3(inverse * glm::dvec4(direction, 0.0));
+        // a bounding sphere first
+        glm::dvec3 low(INFINITY), high(-INFINITY);
+        for (const glm::vec3& p : mesh.positions) {
+            low = glm::min(low, glm::dvec3(p));
+            high = glm::max(high, glm::dvec3(p));
+        }
+        const glm::dvec3 centre = 0.5 * (low + high);
+        const double radius = 0.5 * glm::length(high - low) * 1.001 + 1e-9;
+        const glm::dvec3 oc = o - centre;
+        const double b = glm::dot(oc, d), a = glm::dot(d, d);
+        if (b * b - a * (glm::dot(oc, oc) - radius * radius) < 0.0) continue;
+        const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(m)));
+        for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
+            const std::uint32_t v[3] = {mesh.indices[i], mesh.indices[i + 1], mesh.indices[i + 2]};
+            const glm::dvec3 p0(mesh.positions[v[0]]), p1(mesh.positions[v[1]]),
+                p2(mesh.positions[v[2]]);
+            const auto hit = hitTriangle(o, d, p0, p1, p2);
+            if (!hit || (best && hit->t >= best->distance)) continue;
+            const double w[3] = {1.0 - hit->u - hit->v, hit->u, hit->v};
+            ModelHit out;
+            out.position = origin + direction * hit->t;
+            glm::dvec3 normal(0.0);
+            out.uv0 = out.uv1 = glm::dvec2(0.0);
+            out.color = glm::dvec4(0.0);
+            for (int k = 0; k < 3; ++k) {
+                normal += w[k] * glm::dvec3(mesh.normals[v[k]]);
+                out.uv0 += w[k] * glm::dvec2(mesh.uvs[v[k]]);
+                if (!mesh.uvs1.empty()) out.uv1 += w[k] * glm::dvec2(mesh.uvs1[v[k]]);
+                out.color += w[k] * (mesh.colors.empty() ? glm::dvec4(1.0)
+                                                         : glm::dvec4(mesh.colors[v[k]]));
+            }
+            out.normal = glm::normalize(normalMatrix * normal);
+            out.primitive = int(index);
+            out.distance = hit->t;
+            out.minBarycentric = std::min({w[0], w[1], w[2]});
+            out.frontFacing = glm::dot(glm::cross(p1 - p0, p2 - p0), d) < 0.0;
+            if (glm::determinant(glm::dmat3(m)) < 0.0) out.frontFacing = !out.frontFacing;
+            best = out;
+        }
+    }
+    return best;
+}
+
 glm::dvec3 cameraRay(const glm::dvec3& front, double fovY, int width, int height, double x,
                      double y) {
     const glm::dvec3 right = glm::normalize(glm::cross(front, glm::dvec3(0.0, 1.0, 0.0)));

@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "mesh.h"
+#include "model.h"
 
 namespace pbr::test {
 
@@ -25,6 +26,23 @@ struct MeshHit {
 std::optional<MeshHit> hitUvSphere(const MeshData& sphere, int xSegments, int ySegments,
                                    const glm::dmat4& model, const glm::dvec3& origin,
                                    const glm::dvec3& direction);
+
+// A ray against every triangle of a loaded model, each primitive placed by `world` x its node
+// transform: the nearest hit, with the vertex attributes interpolated by its barycentric
+// weights (the normal through the CPU's own inverse transpose, normalised).
+struct ModelHit {
+    glm::dvec3 position;
+    glm::dvec3 normal;  // world space, unit, interpolated (the geometric side it was hit from
+                        // is frontFacing)
+    glm::dvec2 uv0, uv1;
+    glm::dvec4 color;  // COLOR_0, white when the mesh has none
+    int primitive = -1;
+    double distance = 0.0;
+    double minBarycentric = 0.0;
+    bool frontFacing = true;  // the triangle is counter-clockwise seen from the ray's origin
+};
+std::optional<ModelHit> hitModel(const Model& model, const glm::dmat4& world,
+                                 const glm::dvec3& origin, const glm::dvec3& direction);
 
 // The unit direction through image point (x right, y down, in pixels) of a camera at `position`
 // looking along `front` (world up +Y), `fovY` radians, `width` x `height` pixels.

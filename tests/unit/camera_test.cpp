@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "camera.h"
 
@@ -98,6 +101,249 @@ TEST(Camera, GridCameraSeesTheWholeGrid) {
             EXPECT_LT(std::abs(p.y / p.w), 0.95f);
         }
     }
+}
+
+// ---- OrbitCamera -------------------------------------------------------------------------------
+
+// Points spread evenly over the unit sphere (a Fibonacci spiral), plus its centre.
+std::vector<glm::dvec3> unitSpherePoints(int count = 2000) {
+    std::vector<glm::dvec3> points{{0.0, 0.0, 0.0}};
+    const double golden = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+    for (int i = 0; i < count; ++i) {
+        const double y = 1.0 - 2.0 * (i + 0.5) / count;
+        const double ring = std::sqrt(1.0 - y * y);
+        points.push_back({ring * std::cos(golden * i), y, ring * std::sin(golden * i)});
+    }
+    return points;
+}
+
+// Clip coordinates in double, from the camera's float matrices: the tests judge the planes, not
+// the rounding of this arithmetic.
+glm::dvec4 toClip(const OrbitCamera& camera, float aspect, const glm::dvec3& point) {
+    const glm::dmat4 clip =
+        glm::dmat4(camera.projectionMatrix(aspect)) * glm::dmat4(camera.viewMatrix());
+    return clip * glm::dvec4(point, 1.0);
+}
+
+glm::dvec3 toNdc(const OrbitCamera& camera, float aspect, const glm::dvec3& point) {
+    const glm::dvec4 clip = toClip(camera, aspect, point);
+    return glm::dvec3(clip) / clip.w;
+}
+
+struct Bounds {
+    glm::vec3 min, max;
+    glm::dvec3 centre() const { return 0.5 * (glm::dvec3(min) + glm::dvec3(max)); }
+    double radius() const { return 0.5 * glm::length(glm::dvec3(max) - glm::dvec3(min)); }
+};
+
+// A box off the origin, not a cube, times `scale`: 1 mm to 1 km for scales 1e-3 to 1e3.
+Bounds scaledBounds(float scale) {
+    return {glm::vec3(-1.0f, 0.5f, -2.0f) * scale, glm::vec3(3.0f, 2.0f, 1.0f) * scale};
+}
+
+constexpr float kScales[] = {1e-3f, 1.0f, 1e3f};
+
+// The default view: on the +Z side of the centre looking down -Z, and the bounding sphere fills
+// the narrower field of view to 1/1.1 of its half angle's sine: the largest NDC coordinate of the
+// sphere on that axis is tan(asin(sin(h) / 1.1)) / tan(h), h the half field of view.
+TEST(OrbitCamera, FramingFitsTheBoundingSphereAtAnyScaleAndAspect) {
+    for (const float scale : kScales) {
+        const Bounds bounds = scaledBounds(scale);
+        for (const float aspect : {16.0f / 9.0f, 1.0f, 9.0f / 16.0f, 3.0f, 0.25f}) {
+            const OrbitCamera camera = OrbitCamera::framing(bounds.min, bounds.max, aspect);
+            const glm::dvec3 eye(camera.position());
+            const glm::dvec3 centre = bounds.centre();
+            EXPECT_NEAR(eye.x, centre.x, 1e-5 * scale);
+            EXPECT_NEAR(eye.y, centre.y, 1e-5 * scale);
+            EXPECT_GT(eye.z, centre.z);
+            EXPECT_FLOAT_EQ(camera.yaw(), 0.0f);
+            EXPECT_FLOAT_EQ(camera.pitch(), 0.0f);
+            expectNear(camera.target(), glm::vec3(centre), 1e-6f * scale);
+
+            const double halfY = glm::radians(22.5);
+            const double halfX = std::atan(std::tan(halfY) * aspect);
+            const double half = std::min(halfX, halfY);
+            const double edge = std::tan(std::asin(std::sin(half) / 1.1)) / std::tan(half);
+            double largest = 0.0;
+            for (const glm::dvec3& unit : unitSpherePoints()) {
+                const glm::dvec3 ndc = toNdc(camera, aspect, centre + bounds.radius() * unit);
+                const double onAxis = std::abs(halfX < halfY ? ndc.x : ndc.y);
+                EXPECT_LE(onAxis, edge + 1e-4) << "scale " << scale << ", aspect " << aspect;
+                EXPECT_LT(std::abs(ndc.x), 1.0);
+                EXPECT_LT(std::abs(ndc.y), 1.0);
+                EXPECT_GT(ndc.z, -1.0);
+                EXPECT_LT(ndc.z, 1.0);
+                largest = std::max(largest, onAxis);
+            }
+            EXPECT_GT(largest, edge - 0.01) << "scale " << scale << ", aspect " << aspect;
+        }
+    }
+}
+
+// The model stays in its own units, and a model 1000 times larger looks exactly the same, after
+// the same drags and scrolls too.
+TEST(OrbitCamera, AModelOfAnySizeLooksTheSame) {
+    const Bounds unit = scaledBounds(1.0f);
+    for (const float scale : {1e-3f, 1e3f}) {
+        const Bounds scaled = scaledBounds(scale);
+        OrbitCamera a = OrbitCamera::framing(unit.min, unit.max, 1.5f);
+        OrbitCamera b = OrbitCamera::framing(scaled.min, scaled.max, 1.5f);
+        for (int step = 0; step < 3; ++step) {
+            for (const glm::dvec3& point : unitSpherePoints(200)) {
+                const glm::dvec3 p = unit.centre() + unit.radius() * point;
+                const glm::dvec3 ndcA = toNdc(a, 1.5f, p);
+                const glm::dvec3 ndcB = toNdc(b, 1.5f, p * double(scale));
+                EXPECT_NEAR(ndcA.x, ndcB.x, 1e-4);
+                EXPECT_NEAR(ndcA.y, ndcB.y, 1e-4);
+                EXPECT_NEAR(ndcA.z, ndcB.z, 1e-4);
+            }
+            a.orbit(37.0f, -12.0f);
+            b.orbit(37.0f, -12.0f);
+            a.dolly(2.0f);
+            b.dolly(2.0f);
+        }
+    }
+}
+
+// Near and far follow the distance: at every dolly distance from 0.05 r to 50 r and any scale,
+// nothing of the bounding sphere beyond 1 % of the eye's distance is clipped (nothing at all from
+// outside the sphere), and a 24-bit depth buffer still tells apart two surfaces 0.1 % of r apart
+// at the sphere's far side, where its resolution is worst.
+TEST(OrbitCamera, NothingClippedAndDepthResolvedAtAnyDistance) {
+    for (const float scale : kScales) {
+        const Bounds bounds = scaledBounds(scale);
+        const double r = bounds.radius();
+        OrbitCamera camera = OrbitCamera::framing(bounds.min, bounds.max, 16.0f / 9.0f);
+        camera.orbit(100.0f, 40.0f);
+        camera.dolly(1000.0f);  // all the way in
+        EXPECT_NEAR(camera.distance(), 0.05 * r, 1e-5 * r);
+        std::vector<double> distances;
+        for (;;) {
+            const double d = camera.distance();
+            distances.push_back(d / r);
+            const glm::dmat4 view(camera.viewMatrix());
+            for (const glm::dvec3& unit : unitSpherePoints(500)) {
+                const glm::dvec3 p = bounds.centre() + r * unit;
+                const double depth = -(view * glm::dvec4(p, 1.0)).z;
+                if (depth < 0.01 * d && d < 1.07 * r) continue;  // at the eye, inside the sphere
+                const glm::dvec4 clip = toClip(camera, 1.0f, p);
+                EXPECT_GE(clip.z, -clip.w) << "clipped by near at distance " << d / r << " r";
+                EXPECT_LE(clip.z, clip.w) << "clipped by far at distance " << d / r << " r";
+            }
+            // Window depth of two points on the view axis at d + r and d + 1.001 r.
+            const glm::dmat4 projection(camera.projectionMatrix(1.0f));
+            auto windowDepth = [&](double z) {
+                const glm::dvec4 clip = projection * glm::dvec4(0.0, 0.0, -z, 1.0);
+                return 0.5 * clip.z / clip.w + 0.5;
+            };
+            const double steps = (windowDepth(d + 1.001 * r) - windowDepth(d + r)) * 16777216.0;
+            EXPECT_GE(steps, 4.0) << "depth steps between surfaces 0.1 % of r apart at distance "
+                                  << d / r << " r, scale " << scale;
+            if (d >= 50.0 * r * 0.9999) break;
+            camera.dolly(-2.0f);
+        }
+        EXPECT_NEAR(distances.back(), 50.0, 1e-3);
+        EXPECT_GT(distances.size(), 20u);
+    }
+}
+
+// Dragging right moves the eye to its left around the target, dragging up moves it down: a point
+// on the model's front follows the cursor. 0.25 degrees a pixel; pitch stops at +-89 degrees.
+TEST(OrbitCamera, TheModelFollowsTheCursor) {
+    const Bounds bounds = scaledBounds(1.0f);
+    const glm::dvec3 front = bounds.centre() + glm::dvec3(0.0, 0.0, bounds.radius());
+    OrbitCamera camera = OrbitCamera::framing(bounds.min, bounds.max, 1.0f);
+    camera.orbit(40.0f, 0.0f);  // right
+    EXPECT_FLOAT_EQ(camera.yaw(), -10.0f);
+    EXPECT_LT(camera.position().x, float(bounds.centre().x));  // the eye went to its left (-X)
+    EXPECT_GT(toNdc(camera, 1.0f, front).x, 0.05);             // the front point went right
+    EXPECT_NEAR(toNdc(camera, 1.0f, front).y, 0.0, 1e-5);
+
+    camera = OrbitCamera::framing(bounds.min, bounds.max, 1.0f);
+    camera.orbit(0.0f, 40.0f);  // up (y up, as InputFrame gives it)
+    EXPECT_FLOAT_EQ(camera.pitch(), -10.0f);
+    EXPECT_LT(camera.position().y, float(bounds.centre().y));  // the eye went down
+    EXPECT_GT(toNdc(camera, 1.0f, front).y, 0.05);             // the front point went up
+
+    camera.orbit(1440.0f, 0.0f);  // a whole turn
+    EXPECT_NEAR(camera.yaw(), 0.0f, 1e-4f);
+    camera.orbit(720.0f, 0.0f);  // half a turn: yaw stays within [-180, 180)
+    EXPECT_FLOAT_EQ(camera.yaw(), -180.0f);
+    camera.orbit(0.0f, -10000.0f);
+    EXPECT_FLOAT_EQ(camera.pitch(), 89.0f);
+    camera.orbit(0.0f, 10000.0f);
+    EXPECT_FLOAT_EQ(camera.pitch(), -89.0f);
+    // Still looking at the target from the same distance.
+    const glm::vec3 seen = glm::vec3(camera.viewMatrix() * glm::vec4(camera.target(), 1.0f));
+    expectNear(seen, {0.0f, 0.0f, -camera.distance()}, 1e-5f);
+}
+
+// Scroll up (positive) comes closer: x 0.9 a step, within [0.05 r, 50 r].
+TEST(OrbitCamera, DollyIsMultiplicativeAndClamped) {
+    const Bounds bounds = scaledBounds(1e3f);
+    const float r = float(bounds.radius());
+    OrbitCamera camera = OrbitCamera::framing(bounds.min, bounds.max, 1.0f);
+    const float start = camera.distance();
+    camera.dolly(1.0f);
+    EXPECT_NEAR(camera.distance(), 0.9f * start, 1e-5f * start);
+    camera.dolly(-3.0f);
+    EXPECT_NEAR(camera.distance(), start / (0.9f * 0.9f), 1e-5f * start);
+    camera.dolly(0.5f);
+    EXPECT_NEAR(camera.distance(), start / (0.9f * 0.9f) * std::sqrt(0.9f), 1e-5f * start);
+    camera.dolly(1000.0f);
+    EXPECT_NEAR(camera.distance(), 0.05f * r, 1e-5f * r);
+    camera.dolly(-1000.0f);
+    EXPECT_NEAR(camera.distance(), 50.0f * r, 1e-5f * r);
+    const glm::vec3 seen = glm::vec3(camera.viewMatrix() * glm::vec4(camera.target(), 1.0f));
+    expectNear(seen / r, {0.0f, 0.0f, -50.0f}, 1e-4f);
+
+    // An explicit start beyond 50 r is kept, and scrolling out does not push it further.
+    const glm::vec3 centre(bounds.centre());
+    camera = OrbitCamera::fromPosition(bounds.min, bounds.max, centre + glm::vec3(0, 0, 80 * r));
+    camera.dolly(-1.0f);
+    EXPECT_NEAR(camera.distance(), 80.0f * r, 1e-4f * r);
+    camera.dolly(1.0f);
+    EXPECT_NEAR(camera.distance(), 72.0f * r, 1e-4f * r);
+}
+
+// --camera x,y,z for an orbit sample: the eye where asked, looking at the bounds' centre.
+TEST(OrbitCamera, FromPositionLooksAtTheCentreFromThere) {
+    const glm::vec3 min(0.0f), max(2.0f);   // centre (1,1,1)
+    const glm::vec3 eye(3.0f, 4.0f, 5.0f);  // offset (2,3,4)
+    const OrbitCamera camera = OrbitCamera::fromPosition(min, max, eye);
+    expectNear(camera.position(), eye, 1e-5f);
+    expectNear(camera.target(), {1, 1, 1});
+    EXPECT_NEAR(camera.distance(), std::sqrt(29.0f), 1e-5f);
+    EXPECT_NEAR(camera.yaw(), glm::degrees(std::atan2(2.0f, 4.0f)), 1e-4f);
+    EXPECT_NEAR(camera.pitch(), glm::degrees(std::asin(3.0f / std::sqrt(29.0f))), 1e-4f);
+    const glm::vec3 seen = glm::vec3(camera.viewMatrix() * glm::vec4(1, 1, 1, 1));
+    expectNear(seen, {0.0f, 0.0f, -std::sqrt(29.0f)}, 1e-5f);
+
+    // Straight above: pitch 89, the distance kept.
+    const OrbitCamera above = OrbitCamera::fromPosition(min, max, {1.0f, 9.0f, 1.0f});
+    EXPECT_FLOAT_EQ(above.pitch(), 89.0f);
+    EXPECT_NEAR(above.distance(), 8.0f, 1e-5f);
+    EXPECT_GT(above.position().y, 8.99f);
+
+    // At the centre itself: the least distance, on the +Z side.
+    const OrbitCamera inside = OrbitCamera::fromPosition(min, max, {1.0f, 1.0f, 1.0f});
+    EXPECT_NEAR(inside.distance(), 0.05f * std::sqrt(3.0f), 1e-6f);
+    expectNear(inside.position(), {1.0f, 1.0f, 1.0f + 0.05f * std::sqrt(3.0f)}, 1e-5f);
+}
+
+// A flat or point-sized model still gets a camera that works.
+TEST(OrbitCamera, DegenerateBoundsStillGiveAView) {
+    const OrbitCamera flat = OrbitCamera::framing({-1, -1, 0}, {1, 1, 0}, 1.0f);
+    EXPECT_GT(flat.nearPlane(), 0.0f);
+    EXPECT_GT(flat.farPlane(), flat.nearPlane());
+    const OrbitCamera point = OrbitCamera::framing({2, 3, 4}, {2, 3, 4}, 1.0f);
+    EXPECT_GT(point.radius(), 0.0f);
+    EXPECT_GT(point.distance(), 0.0f);
+    EXPECT_GT(point.farPlane(), point.nearPlane());
+    const glm::mat4 clip = point.projectionMatrix(1.0f) * point.viewMatrix();
+    const glm::vec4 centre = clip * glm::vec4(2, 3, 4, 1);
+    EXPECT_TRUE(std::isfinite(centre.z / centre.w));
+    EXPECT_NEAR(centre.x / centre.w, 0.0f, 1e-3f);
 }
 
 }  // namespace

@@ -1,0 +1,101 @@
+// A glTF 2.0 material read at one fragment (the specification's section 3.9 and Appendix B):
+// every input a factor times a texture, each texture read at its own texture coordinate set
+// through its KHR_texture_transform matrix. Written once for the glTF samples; it hands the
+// shading a SurfaceMaterial, the one description both workflows end in. The including shader
+// declares the inputs WorldPos, Normal, Tangent, TexCoords0, TexCoords1 and VertexColor.
+// Texture units are fixed: 0 base colour, 1 metallic-roughness, 2 normal, 3 occlusion,
+// 4 emissive (bound by pbr::GltfRenderer, common/gltf_renderer.h).
+#include "normal_mapping.glsl"
+
+const int ALPHA_OPAQUE = 0;
+const int ALPHA_MASK = 1;
+const int ALPHA_BLEND = 2;
+
+// Absent textures are bound to a 1x1 white texture, so factor x texture is the factor alone.
+uniform vec4 baseColorFactor;
+uniform sampler2D baseColorTexture;  // sRGB: the sampler returns linear values
+uniform int baseColorUvSet;
+uniform mat3 baseColorUvTransform;
+
+uniform float metallicFactor;
+uniform float roughnessFactor;
+uniform sampler2D metallicRoughnessTexture;  // G = roughness, B = metallic (linear)
+uniform int metallicRoughnessUvSet;
+uniform mat3 metallicRoughnessUvTransform;
+
+uniform bool hasNormalTexture;
+uniform float normalScale;
+uniform sampler2D normalTexture;
+uniform int normalUvSet;
+uniform mat3 normalUvTransform;
+
+uniform float occlusionStrength;
+uniform sampler2D occlusionTexture;  // R
+uniform int occlusionUvSet;
+uniform mat3 occlusionUvTransform;
+
+uniform vec3 emissiveFactor;
+uniform sampler2D emissiveTexture;  // sRGB
+uniform int emissiveUvSet;
+uniform mat3 emissiveUvTransform;
+
+uniform int alphaMode;
+uniform float alphaCutoff;
+uniform bool unlit;  // KHR_materials_unlit: the base colour is the result
+
+struct SurfaceMaterial
+{
+    vec3 baseColor;     // linear: what an unlit material shows
+    vec3 diffuseColor;  // c_diff of the Appendix B implementation
+    vec3 F0;            // reflectance at normal incidence
+    float roughness;    // perceptual; alpha = roughness^2
+    float alpha;        // opacity (1 unless BLEND)
+    float occlusion;    // 1 - strength + strength x texture: scales indirect light only
+    vec3 emissive;      // linear radiance
+    vec3 N;             // world-space shading normal, facing the viewer on double-sided back faces
+};
+
+vec2 textureUv(int uvSet, mat3 transform)
+{
+    vec2 uv = uvSet == 1 ? TexCoords1 : TexCoords0;
+    return (transform * vec3(uv, 1.0)).xy;
+}
+
+// The shading normal: the geometric one (flipped on the back faces of a double-sided material,
+// as the specification asks), perturbed by the normal texture scaled in x and y by normalScale.
+vec3 gltfShadingNormal()
+{
+    vec3 normal = gl_FrontFacing ? Normal : -Normal;
+    vec4 tangent = gl_FrontFacing ? Tangent : -Tangent;  // T and B flip with the normal
+    if (!hasNormalTexture)
+        return normalize(normal);
+    vec3 tangentNormal = texture(normalTexture, textureUv(normalUvSet, normalUvTransform)).xyz * 2.0 - 1.0;
+    tangentNormal.xy *= normalScale;
+    return normalFromMapWithTangent(normalize(tangentNormal), normal, tangent);
+}
+
+// The metallic-roughness workflow. MASK discards what lies below the cutoff here.
+SurfaceMaterial readMetallicRoughness()
+{
+    SurfaceMaterial m;
+    vec4 base = baseColorFactor * VertexColor *
+                texture(baseColorTexture, textureUv(baseColorUvSet, baseColorUvTransform));
+    if (alphaMode == ALPHA_MASK && base.a < alphaCutoff)
+        discard;
+    m.alpha = alphaMode == ALPHA_BLEND ? base.a : 1.0;
+    m.baseColor = base.rgb;
+
+    vec4 mr = texture(metallicRoughnessTexture,
+                      textureUv(metallicRoughnessUvSet, metallicRoughnessUvTransform));
+    float metallic = clamp(metallicFactor * mr.b, 0.0, 1.0);
+    m.roughness = clamp(roughnessFactor * mr.g, 0.0, 1.0);
+    m.diffuseColor = base.rgb * (1.0 - metallic);
+    m.F0 = mix(vec3(0.04), base.rgb, metallic);
+
+    float ao = texture(occlusionTexture, textureUv(occlusionUvSet, occlusionUvTransform)).r;
+    m.occlusion = 1.0 + occlusionStrength * (ao - 1.0);
+    m.emissive = emissiveFactor *
+                 texture(emissiveTexture, textureUv(emissiveUvSet, emissiveUvTransform)).rgb;
+    m.N = gltfShadingNormal();
+    return m;
+}

@@ -1,0 +1,352 @@
+// Sample 07 against the glTF specification's arithmetic done on the CPU (pbr::cpu, common/brdf):
+// the Appendix B BRDF under KHR_lights_punctual lights, with image-based light off and no tone
+// mapping, so a pixel is encode_sRGB(the sum over the lights). Scenes are written by the tests
+// in JSON (tests/support/gltf_scene.h) or are the project's showcase; every ray is cast against
+// the very triangles the GPU draws (tests/support/mesh_hit.h).
+//
+// Exactness: no MSAA; pixels within 1 % of a triangle edge are left out; so are pixels where the
+// CPU's own answer moves by more than 1/255 when the normal turns by 0.002 radians (the peak of
+// a mirror-like highlight, where float and double part ways), so what is compared is the
+// shading, not rounding.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <optional>
+
+#include "support/golden.h"
+#include "support/gltf_scene.h"
+#include "support/mesh_hit.h"
+
+#include "brdf.h"
+#include "camera.h"
+#include "image.h"
+#include "model.h"
+#include "paths.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kSize = 400;  // square renders: --size 400x400
+
+double linearToSrgb(double c) {
+    c = std::clamp(c, 0.0, 1.0);
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+
+// 07 on `model`, image-based light off, no tone mapping, no MSAA, from `eye` (looking at the
+// model's centre).
+Image render07(const fs::path& dir, const fs::path& model, const glm::vec3& eye,
+               std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = {"--model", model.string(), "--no-ibl", "--tonemap", "none",
+                                     "--msaa", "0", "--size",
+                                     std::to_string(kSize) + "x" + std::to_string(kSize),
+                                     "--camera",
+                                     std::to_string(eye.x) + "," + std::to_string(eye.y) + "," +
+                                         std::to_string(eye.z)};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const SampleRender render = renderSample("07_gltf_metallic_roughness",
+                                             dir / (model.stem().string() + ".png"), args);
+    EXPECT_EQ(render.run.exitCode, 0) << render.run.err;
+    EXPECT_EQ(render.run.err.find("GL error"), std::string::npos) << render.run.err;
+    return readImage(render.image, 3);
+}
+
+// The pixel centre's ray of the orbit camera 07 uses for `eye`.
+struct Rays {
+    glm::dmat4 toWorld;
+    Rays(const Model& model, const glm::vec3& eye) {
+        const OrbitCamera camera = OrbitCamera::fromPosition(model.boundsMin, model.boundsMax, eye);
+        toWorld = glm::inverse(glm::dmat4(camera.projectionMatrix(1.0f)) *
+                               glm::dmat4(camera.viewMatrix()));
+    }
+    std::pair<glm::dvec3, glm::dvec3> at(int px, int py) const {
+        const glm::dvec2 ndc(2.0 * (px + 0.5) / kSize - 1.0, 1.0 - 2.0 * (py + 0.5) / kSize);
+        const glm::dvec4 nearPoint = toWorld * glm::dvec4(ndc, -1.0, 1.0);
+        const glm::dvec4 farPoint = toWorld * glm::dvec4(ndc, 1.0, 1.0);
+        const glm::dvec3 origin = glm::dvec3(nearPoint) / nearPoint.w;
+        return {origin, glm::normalize(glm::dvec3(farPoint) / farPoint.w - origin)};
+    }
+};
+
+// The CPU's sRGB bytes for a surface, or nullopt where they are ill-conditioned (see the top).
+using Shade = std::function<glm::vec3(const glm::vec3& normal)>;
+std::optional<glm::ivec3> expectedBytes(const Shade& shade, const glm::vec3& normal) {
+    auto bytes = [&](const glm::vec3& n) {
+        const glm::vec3 c = shade(glm::normalize(n));
+        return glm::ivec3(int(std::lround(linearToSrgb(c.r) * 255.0)),
+                          int(std::lround(linearToSrgb(c.g) * 255.0)),
+                          int(std::lround(linearToSrgb(c.b) * 255.0)));
+    };
+    const glm::ivec3 centre = bytes(normal);
+    const glm::vec3 a = glm::normalize(glm::cross(normal, std::abs(normal.x) < 0.9f
+                                                              ? glm::vec3(1, 0, 0)
+                                                              : glm::vec3(0, 1, 0)));
+    const glm::vec3 b = glm::cross(normal, a);
+    for (const glm::vec3& turn : {a, -a, b, -b}) {
+        const glm::ivec3 moved = bytes(normal + 0.002f * turn);
+        if (glm::any(glm::greaterThan(glm::abs(moved - centre), glm::ivec3(1)))) return std::nullopt;
+    }
+    return centre;
+}
+
+// A grey dielectric square (2 x 2 m at z = 0, facing +Z) under the lights of `lightsJson`
+// (KHR_lights_punctual's "lights") on nodes `nodesJson` (node 0 is the square).
+fs::path writeLitSquare(const fs::path& dir, const std::string& name, const std::string& lightsJson,
+                        const std::string& lightNodesJson, int lightNodeCount) {
+    std::string sceneNodes = "0";
+    for (int i = 1; i <= lightNodeCount; ++i) sceneNodes += "," + std::to_string(i);
+    return writeTextFile(dir, name, R"({"asset":{"version":"2.0"},
+"extensionsUsed":["KHR_lights_punctual"],
+)" + squareBuffersJson(2.0f) + R"(
+"materials":[{"name":"grey","pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],
+  "metallicFactor":0,"roughnessFactor":0.7}}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) + R"(]}],
+"extensions":{"KHR_lights_punctual":{"lights":[)" + lightsJson + R"(]}},
+"nodes":[{"mesh":0},)" + lightNodesJson + R"(],
+"scenes":[{"nodes":[)" + sceneNodes + R"(]}],"scene":0})");
+}
+
+// Compares every well-conditioned pixel of the square with the CPU; `classify` sorts each hit
+// point into a named class (e.g. "inside the cone") and the test demands `minimum` of each.
+void expectSquareMatchesCpu(const fs::path& file, const std::map<std::string, int>& minimum,
+                            const std::function<std::string(const glm::vec3&)>& classify) {
+    const Model model = loadModel(file);
+    const glm::vec3 eye(0.0f, 0.0f, 3.0f);
+    const Image image = render07(file.parent_path(), file, eye);
+    const Rays rays(model, eye);
+    const Material& material = model.materials.at(0);
+    std::map<std::string, int> counts;
+    int worst = 0;
+    for (int py = 0; py < kSize; py += 2) {
+        for (int px = 0; px < kSize; px += 2) {
+            const auto [origin, direction] = rays.at(px, py);
+            const auto hit = hitModel(model, glm::dmat4(1.0), origin, direction);
+            if (!hit || hit->minBarycentric < 0.01) continue;
+            const glm::vec3 position(hit->position);
+            const Shade shade = [&](const glm::vec3& normal) {
+                const cpu::GltfSurface surface = cpu::metallicRoughnessSurface(
+                    position, normal, glm::vec3(material.baseColorFactor), 0.0f, 0.7f);
+                return cpu::shadePunctualLights(surface, eye, model.lights);
+            };
+            const auto expected = expectedBytes(shade, glm::vec3(hit->normal));
+            if (!expected) continue;
+            for (int c = 0; c < 3; ++c) {
+                const int diff = std::abs(int(image.at(px, py, c)) - (*expected)[c]);
+                worst = std::max(worst, diff);
+                EXPECT_LE(diff, 2) << file.filename() << " pixel (" << px << ", " << py
+                                   << ") at " << position.x << ", " << position.y << " ("
+                                   << classify(position) << "): rendered "
+                                   << int(image.at(px, py, c)) << ", CPU " << (*expected)[c];
+            }
+            ++counts[classify(position)];
+        }
+    }
+    for (const auto& [name, least] : minimum) {
+        std::printf("%s: %d pixels %s\n", file.filename().c_str(), counts[name], name.c_str());
+        EXPECT_GE(counts[name], least) << name;
+    }
+    std::printf("%s: worst channel difference %d/255\n", file.filename().c_str(), worst);
+}
+
+TEST(Reference, Gltf07PointLightRangeWindow) {
+    const fs::path dir = testOutputDir("reference_07_range");
+    // a point light 0.5 m in front of the square's centre, range 1.5: its light ends where
+    // d = 1.5, a circle of radius sqrt(1.5^2 - 0.5^2) = 1.414 on the square
+    const fs::path file = writeLitSquare(
+        dir, "range.gltf", R"({"type":"point","intensity":3,"range":1.5})",
+        R"({"translation":[0,0,0.5],"extensions":{"KHR_lights_punctual":{"light":0}}})", 1);
+    const double edge = std::sqrt(1.5 * 1.5 - 0.5 * 0.5);
+    expectSquareMatchesCpu(
+        file,
+        {{"well inside", 500}, {"just inside the range", 40}, {"just outside the range", 40},
+         {"outside", 500}},
+        [&](const glm::vec3& p) {
+            const double r = std::hypot(p.x, p.y);
+            if (r < edge - 0.1) return "well inside";
+            if (r < edge) return "just inside the range";
+            if (r < edge + 0.1) return "just outside the range";
+            return "outside";
+        });
+}
+
+TEST(Reference, Gltf07SpotLightCones) {
+    const fs::path dir = testOutputDir("reference_07_spot");
+    // a spot 1.5 m in front of the square, shining down -Z onto it: inner cone 0.35 rad, outer
+    // 0.6 rad, so full light within r = 1.5 tan 0.35, none beyond 1.5 tan 0.6, t^2 between
+    const fs::path file = writeLitSquare(
+        dir, "spot.gltf",
+        R"({"type":"spot","intensity":8,"spot":{"innerConeAngle":0.35,"outerConeAngle":0.6}})",
+        R"({"translation":[0,0,1.5],"extensions":{"KHR_lights_punctual":{"light":0}}})", 1);
+    const double inner = 1.5 * std::tan(0.35), outer = 1.5 * std::tan(0.6);
+    expectSquareMatchesCpu(file,
+                           {{"inside the inner cone", 400},
+                            {"just inside the inner cone", 30},
+                            {"in the soft band", 300},
+                            {"just outside the outer cone", 30},
+                            {"outside", 500}},
+                           [&](const glm::vec3& p) {
+                               const double r = std::hypot(p.x, p.y);
+                               if (r < inner - 0.05) return "inside the inner cone";
+                               if (r < inner) return "just inside the inner cone";
+                               if (r < outer) return "in the soft band";
+                               if (r < outer + 0.05) return "just outside the outer cone";
+                               return "outside";
+                           });
+}
+
+TEST(Reference, Gltf07DirectionalAndPointTogether) {
+    const fs::path dir = testOutputDir("reference_07_two");
+    // no range (plain inverse square) and a slanted directional light, placed by rotated nodes
+    const fs::path file = writeLitSquare(
+        dir, "two.gltf",
+        R"({"type":"point","color":[1,0.6,0.3],"intensity":1.5},
+           {"type":"directional","color":[0.3,0.5,1],"intensity":0.8})",
+        R"({"translation":[0.7,-0.4,0.8],"extensions":{"KHR_lights_punctual":{"light":0}}},
+           {"rotation":[0.2588190,0,0,0.9659258],"extensions":{"KHR_lights_punctual":{"light":1}}})",
+        2);
+    expectSquareMatchesCpu(file, {{"lit", 5000}}, [](const glm::vec3&) { return "lit"; });
+}
+
+// MASK keeps a fragment exactly when its alpha is at or above the cutoff: a 16 x 16 texture
+// whose texel i has alpha i / 255 (i = 0..255), nearest-filtered, under an unlit white material
+// with alphaCutoff 0.25: texels 64 and up (64 / 255 = 0.251) show, 63 (0.247) and below do not.
+TEST(Reference, Gltf07MaskKeepsTexelsAtOrAboveTheCutoff) {
+    const fs::path dir = testOutputDir("reference_07_mask");
+    Image alphas{16, 16, 4, {}};
+    for (int i = 0; i < 256; ++i) alphas.pixels.insert(alphas.pixels.end(), {255, 255, 255, std::uint8_t(i)});
+    writePng(dir / "alphas.png", alphas);
+    const fs::path file = writeTextFile(dir, "mask.gltf", R"({"asset":{"version":"2.0"},
+"extensionsUsed":["KHR_materials_unlit"],
+)" + squareBuffersJson(1.0f) + R"(
+"images":[{"uri":"alphas.png"}],
+"samplers":[{"magFilter":9728,"minFilter":9728}],
+"textures":[{"source":0,"sampler":0}],
+"materials":[{"pbrMetallicRoughness":{"baseColorTexture":{"index":0}},"alphaMode":"MASK",
+  "alphaCutoff":0.25,"extensions":{"KHR_materials_unlit":{}}}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) + R"(]}],
+"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})");
+    const Model model = loadModel(file);
+    const glm::vec3 eye(0.0f, 0.0f, 2.6f);
+    const Image image = render07(dir, file, eye);
+    const Rays rays(model, eye);
+    int kept = 0, dropped = 0;
+    for (int py = 0; py < kSize; ++py) {
+        for (int px = 0; px < kSize; ++px) {
+            const auto [origin, direction] = rays.at(px, py);
+            const auto hit = hitModel(model, glm::dmat4(1.0), origin, direction);
+            if (!hit) continue;
+            const glm::dvec2 texel = hit->uv0 * 16.0;
+            const glm::dvec2 within = texel - glm::floor(texel);
+            // well inside one texel (a pixel is about 1/16 of one)
+            if (glm::any(glm::lessThan(within, glm::dvec2(0.2))) ||
+                glm::any(glm::greaterThan(within, glm::dvec2(0.8))))
+                continue;
+            const int i = std::clamp(int(texel.y), 0, 15) * 16 + std::clamp(int(texel.x), 0, 15);
+            const bool shows = image.at(px, py, 0) == 255 && image.at(px, py, 1) == 255;
+            EXPECT_EQ(shows, i >= 64) << "texel " << i << " (alpha " << i << "/255) at pixel ("
+                                      << px << ", " << py << ")";
+            (i >= 64 ? kept : dropped) += 1;
+        }
+    }
+    std::printf("mask: %d pixels kept, %d dropped\n", kept, dropped);
+    EXPECT_GT(kept, 5000);
+    EXPECT_GT(dropped, 1500);
+}
+
+// The project's showcase: its ten spheres, each with its own solid metallic-roughness texture
+// (read here on the CPU: G roughness, B metallic) under the file's own lights.
+struct SphereCheck {
+    std::map<std::string, int> compared;  // pixels, by material
+    int total = 0, worst = 0;
+};
+// `materialOf` gives a sphere's metallic and roughness, or false to leave the sphere out.
+SphereCheck compareShowcaseSpheres(
+    const std::string& name,
+    const std::function<bool(const Material&, const Image& mr, float& metallic, float& roughness)>&
+        materialOf) {
+    const fs::path dir = testOutputDir("reference_07_spheres_" + name);
+    const fs::path file = modelDir() / "pbr_showcase.gltf";
+    const Model model = loadModel(file);
+    const glm::vec3 centre = 0.5f * (model.boundsMin + model.boundsMax);
+    const glm::vec3 eye = centre + glm::vec3(0.0f, 0.2f, 4.0f);
+    const Image image = render07(dir, file, eye);
+    const Rays rays(model, eye);
+    SphereCheck check;
+    for (int py = 0; py < kSize; ++py) {
+        for (int px = py % 2; px < kSize; px += 2) {  // every other pixel, in a checkerboard
+            const auto [origin, direction] = rays.at(px, py);
+            const auto hit = hitModel(model, glm::dmat4(1.0), origin, direction);
+            if (!hit || hit->minBarycentric < 0.01) continue;
+            const Material& material =
+                model.materials[size_t(model.primitives[size_t(hit->primitive)].material)];
+            if (!material.name.starts_with("sphere_")) continue;
+            const Image mr = loadTextureImage(model, material.metallicRoughnessTexture, 3);
+            float metallic = 0.0f, roughness = 0.0f;
+            if (!materialOf(material, mr, metallic, roughness)) continue;
+            const glm::vec3 position(hit->position);
+            const Shade shade = [&](const glm::vec3& normal) {
+                const cpu::GltfSurface surface = cpu::metallicRoughnessSurface(
+                    position, normal, glm::vec3(material.baseColorFactor), metallic, roughness);
+                return cpu::shadePunctualLights(surface, eye, model.lights);
+            };
+            const auto expected = expectedBytes(shade, glm::vec3(hit->normal));
+            if (!expected) continue;
+            for (int c = 0; c < 3; ++c) {
+                const int diff = std::abs(int(image.at(px, py, c)) - (*expected)[c]);
+                check.worst = std::max(check.worst, diff);
+                EXPECT_LE(diff, 2) << material.name << " pixel (" << px << ", " << py
+                                   << "): rendered " << int(image.at(px, py, c)) << ", CPU "
+                                   << (*expected)[c];
+            }
+            ++check.compared[material.name];
+            ++check.total;
+        }
+    }
+    return check;
+}
+
+TEST(Reference, Gltf07ShowcaseSpheresMatchTheCpu) {
+    const SphereCheck check = compareShowcaseSpheres(
+        "all", [](const Material& m, const Image& mr, float& metallic, float& roughness) {
+            // a solid texture: its first texel; glTF: roughness = factor x G, metallic = factor x B
+            roughness = m.roughnessFactor * float(mr.at(0, 0, 1)) / 255.0f;
+            metallic = m.metallicFactor * float(mr.at(0, 0, 2)) / 255.0f;
+            return true;
+        });
+    std::printf("showcase spheres: %d pixels compared, worst channel difference %d/255\n",
+                check.total, check.worst);
+    EXPECT_GT(check.total, 3000);
+    EXPECT_EQ(check.compared.size(), 10u);
+}
+
+// The channel test: the texture with only G set is a fully rough dielectric, the one with only B
+// a mirror-smooth metal (values from the specification, not from the texture reader).
+TEST(Reference, Gltf07MetallicRoughnessChannels) {
+    const SphereCheck check = compareShowcaseSpheres(
+        "channels", [](const Material& m, const Image& mr, float& metallic, float& roughness) {
+            if (m.name == "sphere_metal_0") {  // texel (0, 0, 255): only B
+                EXPECT_EQ(mr.at(0, 0, 0) + mr.at(0, 0, 1), 0);
+                metallic = 1.0f;
+                roughness = 0.0f;
+                return true;
+            }
+            if (m.name == "sphere_dielectric_4") {  // texel (0, 255, 0): only G
+                EXPECT_EQ(mr.at(0, 0, 0) + mr.at(0, 0, 2), 0);
+                metallic = 0.0f;
+                roughness = 1.0f;
+                return true;
+            }
+            return false;
+        });
+    for (const char* name : {"sphere_metal_0", "sphere_dielectric_4"}) {
+        std::printf("%s: %d pixels compared\n", name, check.compared.at(name));
+        EXPECT_GT(check.compared.at(name), 150) << name;
+    }
+}
+
+}  // namespace
+}  // namespace pbr::test

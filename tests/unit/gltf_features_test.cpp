@@ -1,0 +1,147 @@
+// What the model loader reads of a glTF file beyond 03's unlit inputs: samplers, texture
+// coordinate sets, KHR_texture_transform, texture strengths and scales, KHR_lights_punctual
+// placed by their nodes, and the file's extension lists. Each file is written by the test in
+// JSON; the expected values are the JSON's own numbers (and, for the transform, the extension's
+// formula worked out here by hand), never the loader's output.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/gltf_scene.h"
+#include "support/process.h"
+
+#include "image.h"
+#include "model.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path writeFeatureFile(const fs::path& dir) {
+    writePng(dir / "t.png", Image{2, 2, 4, std::vector<std::uint8_t>(16, 200)});
+    return writeTextFile(dir, "features.gltf", R"({"asset":{"version":"2.0"},
+"extensionsUsed":["KHR_texture_transform","KHR_lights_punctual","KHR_materials_emissive_strength"],
+"extensionsRequired":["KHR_materials_emissive_strength"],
+)" + squareBuffersJson(1.0f) + R"(
+"images":[{"uri":"t.png"}],
+"samplers":[{"wrapS":33071,"wrapT":33648,"magFilter":9728,"minFilter":9984}],
+"textures":[{"source":0,"sampler":0},{"source":0}],
+"materials":[{"name":"m",
+  "pbrMetallicRoughness":{
+    "baseColorTexture":{"index":0,"extensions":{"KHR_texture_transform":
+      {"offset":[0.25,-0.5],"rotation":0.7,"scale":[2,3]}}},
+    "metallicRoughnessTexture":{"index":1}},
+  "normalTexture":{"index":1,"scale":0.8},
+  "occlusionTexture":{"index":1,"texCoord":1,"strength":0.6},
+  "emissiveTexture":{"index":0},
+  "emissiveFactor":[1,0.5,0],
+  "extensions":{"KHR_materials_emissive_strength":{"emissiveStrength":4}}}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) + R"(]}],
+"extensions":{"KHR_lights_punctual":{"lights":[
+  {"name":"p","type":"point","color":[1,0.5,0.25],"intensity":20,"range":3.5},
+  {"name":"s","type":"spot","intensity":40,"spot":{"innerConeAngle":0.2,"outerConeAngle":0.5}},
+  {"name":"d","type":"directional","color":[0.5,0.5,1],"intensity":2}]}},
+"nodes":[{"mesh":0},
+  {"name":"pn","translation":[1,2,3],"extensions":{"KHR_lights_punctual":{"light":0}}},
+  {"name":"sn","translation":[0,4,0],"rotation":[-0.70710678,0,0,0.70710678],
+   "extensions":{"KHR_lights_punctual":{"light":1}}},
+  {"name":"parent","translation":[5,0,0],"rotation":[0,0.70710678,0,0.70710678],"children":[4]},
+  {"name":"dn","extensions":{"KHR_lights_punctual":{"light":2}}}],
+"scenes":[{"nodes":[0,1,2,3]}],"scene":0})");
+}
+
+const PunctualLight& lightOfType(const Model& model, PunctualLight::Type type) {
+    for (const PunctualLight& light : model.lights) {
+        if (light.type == type) return light;
+    }
+    throw std::runtime_error("no such light");
+}
+
+void expectNear(const glm::vec3& actual, const glm::vec3& expected, float tolerance) {
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(actual[c], expected[c], tolerance) << "component " << c;
+}
+
+TEST(GltfFeatures, SamplersUvSetsScalesAndStrengths) {
+    const Model model = loadModel(writeFeatureFile(testOutputDir("gltf_features_sampler")));
+    const Material& m = model.materials.at(0);
+    ASSERT_EQ(m.name, "m");
+    // sampler 0: CLAMP_TO_EDGE / MIRRORED_REPEAT, NEAREST / NEAREST_MIPMAP_NEAREST
+    EXPECT_EQ(m.baseColorTexture.wrapS, 33071);
+    EXPECT_EQ(m.baseColorTexture.wrapT, 33648);
+    EXPECT_EQ(m.baseColorTexture.magFilter, 9728);
+    EXPECT_EQ(m.baseColorTexture.minFilter, 9984);
+    // texture 1 names no sampler: repeat, filters left to the renderer
+    EXPECT_EQ(m.metallicRoughnessTexture.wrapS, 10497);
+    EXPECT_EQ(m.metallicRoughnessTexture.wrapT, 10497);
+    EXPECT_EQ(m.metallicRoughnessTexture.magFilter, 0);
+    EXPECT_EQ(m.metallicRoughnessTexture.minFilter, 0);
+    EXPECT_EQ(m.occlusionTexture.uvSet, 1);
+    EXPECT_EQ(m.baseColorTexture.uvSet, 0);
+    EXPECT_FLOAT_EQ(m.occlusionStrength, 0.6f);
+    EXPECT_FLOAT_EQ(m.normalScale, 0.8f);
+    EXPECT_EQ(m.emissiveFactor, glm::vec3(1.0f, 0.5f, 0.0f));
+    // TEXCOORD_1 = TEXCOORD_0 / 2 reaches the mesh
+    const MeshData& mesh = model.primitives.at(0).mesh;
+    ASSERT_EQ(mesh.uvs1.size(), mesh.uvs.size());
+    for (size_t i = 0; i < mesh.uvs.size(); ++i) {
+        EXPECT_NEAR(mesh.uvs1[i].x, 0.5f * mesh.uvs[i].x, 1e-6f);
+        EXPECT_NEAR(mesh.uvs1[i].y, 0.5f * mesh.uvs[i].y, 1e-6f);
+    }
+}
+
+TEST(GltfFeatures, TextureTransformIsTheExtensionsMatrix) {
+    const Model model = loadModel(writeFeatureFile(testOutputDir("gltf_features_transform")));
+    const glm::mat3& t = model.materials.at(0).baseColorTexture.transform;
+    // uv' = offset + R(rotation) (scale * uv), R = [c -s; s c] (the extension's mat3 columns
+    // (c, s), (-s, c)); offset (0.25, -0.5), rotation 0.7, scale (2, 3)
+    const double c = std::cos(0.7), s = std::sin(0.7);
+    auto expected = [&](double u, double v) {
+        const double su = 2.0 * u, sv = 3.0 * v;
+        return glm::dvec2(0.25 + c * su - s * sv, -0.5 + s * su + c * sv);
+    };
+    for (const glm::dvec2 uv : {glm::dvec2(0, 0), glm::dvec2(1, 0), glm::dvec2(0, 1),
+                                glm::dvec2(0.3, 0.8)}) {
+        const glm::vec3 got = t * glm::vec3(glm::vec2(uv), 1.0f);
+        EXPECT_NEAR(got.x, expected(uv.x, uv.y).x, 1e-5) << uv.x << "," << uv.y;
+        EXPECT_NEAR(got.y, expected(uv.x, uv.y).y, 1e-5) << uv.x << "," << uv.y;
+    }
+    // no extension: the identity
+    EXPECT_EQ(model.materials.at(0).metallicRoughnessTexture.transform, glm::mat3(1.0f));
+}
+
+TEST(GltfFeatures, LightsArePlacedByTheirNodes) {
+    const Model model = loadModel(writeFeatureFile(testOutputDir("gltf_features_lights")));
+    ASSERT_EQ(model.lights.size(), 3u);
+    const PunctualLight& point = lightOfType(model, PunctualLight::Type::Point);
+    expectNear(point.color, {20.0f, 10.0f, 5.0f}, 1e-5f);  // colour x intensity
+    expectNear(point.position, {1.0f, 2.0f, 3.0f}, 1e-5f);
+    EXPECT_FLOAT_EQ(point.range, 3.5f);
+    // the spot: at (0, 4, 0), turned -90 degrees about X, so its -Z looks straight down
+    const PunctualLight& spot = lightOfType(model, PunctualLight::Type::Spot);
+    expectNear(spot.color, {40.0f, 40.0f, 40.0f}, 1e-5f);
+    expectNear(spot.position, {0.0f, 4.0f, 0.0f}, 1e-5f);
+    expectNear(spot.direction, {0.0f, -1.0f, 0.0f}, 1e-5f);
+    EXPECT_FLOAT_EQ(spot.innerConeAngle, 0.2f);
+    EXPECT_FLOAT_EQ(spot.outerConeAngle, 0.5f);
+    EXPECT_EQ(spot.range, 0.0f);  // none given: unlimited
+    // the directional light's parent turns 90 degrees about Y: -Z becomes -X
+    const PunctualLight& sun = lightOfType(model, PunctualLight::Type::Directional);
+    expectNear(sun.color, {1.0f, 1.0f, 2.0f}, 1e-5f);
+    expectNear(sun.direction, {-1.0f, 0.0f, 0.0f}, 1e-5f);
+}
+
+TEST(GltfFeatures, ExtensionListsNameWhatIsNotDrawn) {
+    const Model model = loadModel(writeFeatureFile(testOutputDir("gltf_features_extensions")));
+    EXPECT_EQ(model.extensionsRequired, std::vector<std::string>{"KHR_materials_emissive_strength"});
+    EXPECT_EQ(model.extensionsUsed.size(), 3u);
+    const std::vector<std::string> drawn = {"KHR_lights_punctual", "KHR_texture_transform"};
+    EXPECT_EQ(extensionsNotDrawn(model, drawn, true),
+              std::vector<std::string>{"KHR_materials_emissive_strength"});
+    EXPECT_TRUE(extensionsNotDrawn(model, drawn, false).empty());  // said with the required
+    EXPECT_EQ(extensionsNotDrawn(model, {"KHR_lights_punctual"}, false),
+              std::vector<std::string>{"KHR_texture_transform"});
+}
+
+}  // namespace
+}  // namespace pbr::test
