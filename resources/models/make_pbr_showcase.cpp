@@ -38,8 +38,9 @@
 //                                 1.5 m radius on the floor in front of the left spheres, ended
 //                                 by the range
 // spot_light (1.6, 2.6, 1.8)      spot, 60 cd, cones 0.3 / 0.4 rad, aimed at the floor at
-//                                 (1.6, 0, 1): a cool disc of about 1.1 m radius in front of the
-//                                 right spheres, touching none
+//                                 (1.6, 0, 1): a cool disc of about 1.1 m radius on the floor in
+//                                 front of the right spheres; its edge grazes the lower fronts of
+//                                 sphere_dielectric_3 and _4
 // fill_light                      directional, 1.5 lux, travelling along (0.4, -0.6, -0.7)
 //
 // Samplers: REPEAT (floor, spheres, panel), CLAMP_TO_EDGE (label, leaf, pane, panel occlusion),
