@@ -284,6 +284,14 @@ std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& w
 
 }  // namespace
 
+std::optional<std::string> defaultMaterialNote(const Model& model) {
+    if (model.primitivesWithoutMaterial == 0) return std::nullopt;
+    return "note: " + displayPath(model.file) + ": " +
+           std::to_string(model.primitivesWithoutMaterial) +
+           " primitive(s) name no material; drawn in glTF's default material (base colour "
+           "white, metallic 1, roughness 1)";
+}
+
 glm::mat3 textureTransform(const glm::vec2& offset, float rotation, const glm::vec2& scale) {
     const float c = std::cos(rotation), s = std::sin(rotation);
     const glm::mat3 translation(1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, offset.x, offset.y, 1.0f);

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -91,6 +92,11 @@ struct Model {
     // The file's top-level extension lists (glTF only), so a renderer can say what it ignores.
     std::vector<std::string> extensionsUsed, extensionsRequired;
 };
+
+// The note a sample prints when primitives fall back to glTF's default material, or nullopt:
+//   "note: <file>: 4 primitive(s) name no material; drawn in glTF's default material (base
+//   colour white, metallic 1, roughness 1)"
+std::optional<std::string> defaultMaterialNote(const Model& model);
 
 // KHR_texture_transform's matrix: translation x rotation x scale (the extension's order).
 glm::mat3 textureTransform(const glm::vec2& offset, float rotation, const glm::vec2& scale);

@@ -21,12 +21,7 @@ int main(int argc, char** argv) try {
 
     const pbr::Model model = pbr::loadModel(
         app.flag("--model").value_or((pbr::modelDir() / "unlit_showcase.gltf").string()));
-    if (model.primitivesWithoutMaterial > 0) {
-        std::fprintf(stderr,
-                     "note: %s: %d primitive(s) name no material; drawn in glTF's default "
-                     "material (base colour white)\n",
-                     pbr::displayPath(model.file).c_str(), model.primitivesWithoutMaterial);
-    }
+    if (const auto note = pbr::defaultMaterialNote(model)) std::fprintf(stderr, "%s\n", note->c_str());
     const pbr::GpuModel gpuModel(model);
     const pbr::Texture2D white(pbr::Image{1, 1, 3, {255, 255, 255}}, pbr::ColorSpace::Srgb);
     pbr::Shader& shader = app.shader("03_gltf_unlit/unlit.vert", "03_gltf_unlit/unlit.frag");

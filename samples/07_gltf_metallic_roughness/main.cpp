@@ -45,12 +45,7 @@ void describe(const pbr::Model& model, bool punctual) {
         std::fprintf(stderr, "note: %s: uses %s (optional), not drawn\n", file.c_str(),
                      joined(used).c_str());
     }
-    if (model.primitivesWithoutMaterial > 0) {
-        std::fprintf(stderr,
-                     "note: %s: %d primitive(s) name no material; drawn in glTF's default "
-                     "material (white, fully metallic, fully rough)\n",
-                     file.c_str(), model.primitivesWithoutMaterial);
-    }
+    if (const auto note = pbr::defaultMaterialNote(model)) std::fprintf(stderr, "%s\n", note->c_str());
     if (punctual && model.lights.empty()) {
         std::fprintf(stderr, "note: %s: no KHR_lights_punctual lights; one default light\n",
                      file.c_str());

@@ -25,14 +25,34 @@ uniform sampler2D brdfLUT;          // x = NdotV, y = roughness: (scale, bias) t
 uniform float prefilterMaxLod;
 uniform bool exactSplitSum;  // false: the text's form (04, 05 by default); true: the exact one
 
+// The three reads of the split sum at one surface point.
+struct SplitSumReads
+{
+    float NdotV;
+    vec3 irradiance;        // at N
+    vec3 prefilteredColor;  // along R = reflect(-V, N), at the roughness's mip level
+    vec2 envBRDF;           // the LUT's (scale, bias) at (NdotV, roughness)
+};
+
+SplitSumReads readSplitSum(vec3 N, vec3 V, float roughness)
+{
+    SplitSumReads s;
+    s.NdotV = max(dot(N, V), 0.0);
+    vec3 R = reflect(-V, N);
+    s.irradiance = texture(irradianceMap, N).rgb;
+    s.prefilteredColor = textureLod(prefilterMap, R, roughness * prefilterMaxLod).rgb;
+    s.envBRDF = texture(brdfLUT, vec2(s.NdotV, roughness)).rg;
+    return s;
+}
+
 vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, float ao)
 {
-    float NdotV = max(dot(N, V), 0.0);
-    vec3 R = reflect(-V, N);
+    SplitSumReads s = readSplitSum(N, V, roughness);
+    float NdotV = s.NdotV;
     vec3 F0 = mix(vec3(0.04), albedo, metallic);
-    vec3 irradiance = texture(irradianceMap, N).rgb;
-    vec3 prefilteredColor = textureLod(prefilterMap, R, roughness * prefilterMaxLod).rgb;
-    vec2 envBRDF = texture(brdfLUT, vec2(NdotV, roughness)).rg;
+    vec3 irradiance = s.irradiance;
+    vec3 prefilteredColor = s.prefilteredColor;
+    vec2 envBRDF = s.envBRDF;
 
     if (exactSplitSum)
     {
@@ -56,11 +76,7 @@ vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, 
 // 0 or 1 material this is the exactSplitSum form above. Occlusion is the caller's.
 vec3 ambientLightGltf(vec3 N, vec3 V, vec3 diffuseColor, vec3 F0, float roughness)
 {
-    float NdotV = clamp(dot(N, V), 0.0, 1.0);
-    vec3 R = reflect(-V, N);
-    vec3 irradiance = texture(irradianceMap, N).rgb;
-    vec3 prefilteredColor = textureLod(prefilterMap, R, roughness * prefilterMaxLod).rgb;
-    vec2 envBRDF = texture(brdfLUT, vec2(NdotV, roughness)).rg;
-    vec3 E = F0 * envBRDF.x + envBRDF.y;
-    return diffuseColor * irradiance * (1.0 - E) + prefilteredColor * E;
+    SplitSumReads s = readSplitSum(N, V, roughness);
+    vec3 E = F0 * s.envBRDF.x + s.envBRDF.y;
+    return diffuseColor * s.irradiance * (1.0 - E) + s.prefilteredColor * E;
 }

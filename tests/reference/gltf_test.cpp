@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <optional>
 
 #include "support/golden.h"
@@ -32,10 +33,6 @@ namespace fs = std::filesystem;
 
 constexpr int kSize = 400;  // square renders: --size 400x400
 
-double linearToSrgb(double c) {
-    c = std::clamp(c, 0.0, 1.0);
-    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-}
 
 // 07 on `model`, image-based light off, no tone mapping, no MSAA, from `eye` (looking at the
 // model's centre).
@@ -64,11 +61,7 @@ struct Rays {
                                glm::dmat4(camera.viewMatrix()));
     }
     std::pair<glm::dvec3, glm::dvec3> at(int px, int py) const {
-        const glm::dvec2 ndc(2.0 * (px + 0.5) / kSize - 1.0, 1.0 - 2.0 * (py + 0.5) / kSize);
-        const glm::dvec4 nearPoint = toWorld * glm::dvec4(ndc, -1.0, 1.0);
-        const glm::dvec4 farPoint = toWorld * glm::dvec4(ndc, 1.0, 1.0);
-        const glm::dvec3 origin = glm::dvec3(nearPoint) / nearPoint.w;
-        return {origin, glm::normalize(glm::dvec3(farPoint) / farPoint.w - origin)};
+        return pixelRay(toWorld, kSize, kSize, px, py);
     }
 };
 
@@ -91,6 +84,19 @@ std::optional<glm::ivec3> expectedBytes(const Shade& shade, const glm::vec3& nor
         if (glm::any(glm::greaterThan(glm::abs(moved - centre), glm::ivec3(1)))) return std::nullopt;
     }
     return centre;
+}
+
+// Sorts a point of the square by its distance from the centre into the ring whose outer radius
+// it is first below; past the last, `beyond`.
+std::function<std::string(const glm::vec3&)> rings(
+    std::vector<std::pair<double, std::string>> bounds, std::string beyond) {
+    return [bounds = std::move(bounds), beyond = std::move(beyond)](const glm::vec3& p) {
+        const double r = std::hypot(p.x, p.y);
+        for (const auto& [radius, name] : bounds) {
+            if (r < radius) return name;
+        }
+        return beyond;
+    };
 }
 
 // A grey dielectric square (2 x 2 m at z = 0, facing +Z) under the lights of `lightsJson`
@@ -164,13 +170,10 @@ TEST(Reference, Gltf07PointLightRangeWindow) {
         file,
         {{"well inside", 500}, {"just inside the range", 40}, {"just outside the range", 40},
          {"outside", 500}},
-        [&](const glm::vec3& p) {
-            const double r = std::hypot(p.x, p.y);
-            if (r < edge - 0.1) return "well inside";
-            if (r < edge) return "just inside the range";
-            if (r < edge + 0.1) return "just outside the range";
-            return "outside";
-        });
+        rings({{edge - 0.1, "well inside"},
+               {edge, "just inside the range"},
+               {edge + 0.1, "just outside the range"}},
+              "outside"));
 }
 
 TEST(Reference, Gltf07SpotLightCones) {
@@ -188,14 +191,11 @@ TEST(Reference, Gltf07SpotLightCones) {
                             {"in the soft band", 300},
                             {"just outside the outer cone", 30},
                             {"outside", 500}},
-                           [&](const glm::vec3& p) {
-                               const double r = std::hypot(p.x, p.y);
-                               if (r < inner - 0.05) return "inside the inner cone";
-                               if (r < inner) return "just inside the inner cone";
-                               if (r < outer) return "in the soft band";
-                               if (r < outer + 0.05) return "just outside the outer cone";
-                               return "outside";
-                           });
+                           rings({{inner - 0.05, "inside the inner cone"},
+                                  {inner, "just inside the inner cone"},
+                                  {outer, "in the soft band"},
+                                  {outer + 0.05, "just outside the outer cone"}},
+                                 "outside"));
 }
 
 TEST(Reference, Gltf07DirectionalAndPointTogether) {
@@ -208,7 +208,7 @@ TEST(Reference, Gltf07DirectionalAndPointTogether) {
         R"({"translation":[0.7,-0.4,0.8],"extensions":{"KHR_lights_punctual":{"light":0}}},
            {"rotation":[0.2588190,0,0,0.9659258],"extensions":{"KHR_lights_punctual":{"light":1}}})",
         2);
-    expectSquareMatchesCpu(file, {{"lit", 5000}}, [](const glm::vec3&) { return "lit"; });
+    expectSquareMatchesCpu(file, {{"lit", 5000}}, rings({}, "lit"));
 }
 
 // MASK keeps a fragment exactly when its alpha is at or above the cutoff: a 16 x 16 texture

@@ -280,10 +280,7 @@ TEST(Reference, LightingTextured02MatchesTheCpuBrdfWithTexels) {
     ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
     const Image image = readImage(render.image, 3);
 
-    auto srgbToLinear = [](std::uint8_t byte) {
-        const double c = byte / 255.0;
-        return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
-    };
+    auto linearOf = [](std::uint8_t byte) { return float(srgbToLinear(byte / 255.0)); };
     const cpu::PointLight light{{0.0f, 0.0f, 10.0f}, {150.0f, 150.0f, 150.0f}};
     const Comparison result =
         compareGrid(image, [&](double x, double y, int row, int col) -> std::optional<glm::dvec3> {
@@ -312,9 +309,9 @@ TEST(Reference, LightingTextured02MatchesTheCpuBrdfWithTexels) {
             surface.position = glm::vec3(hit->position);
             surface.normal =
                 glm::normalize(T * tangentNormal.x + B * tangentNormal.y + N * tangentNormal.z);
-            surface.albedo = {srgbToLinear(albedo.at(texelX, texelY, 0)),
-                              srgbToLinear(albedo.at(texelX, texelY, 1)),
-                              srgbToLinear(albedo.at(texelX, texelY, 2))};
+            surface.albedo = {linearOf(albedo.at(texelX, texelY, 0)),
+                              linearOf(albedo.at(texelX, texelY, 1)),
+                              linearOf(albedo.at(texelX, texelY, 2))};
             surface.metallic = metallic.at(texelX, texelY, 0) / 255.0f;
             surface.roughness = roughness.at(texelX, texelY, 0) / 255.0f;
             surface.ao = float(ao.at(texelX, texelY, 0)) / 255.0f;  // occlusion is linear

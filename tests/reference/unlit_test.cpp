@@ -26,13 +26,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-double srgbToLinear(double c) {
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-double linearToSrgb(double c) {
-    c = std::clamp(c, 0.0, 1.0);
-    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-}
 
 TEST(Reference, GltfUnlit03IsFactorTimesVertexColourTimesTexel) {
     constexpr int kWidth = 1280, kHeight = 720;
@@ -62,11 +55,7 @@ TEST(Reference, GltfUnlit03IsFactorTimesVertexColourTimesTexel) {
     double worst = 0.0;
     for (int py = 0; py < kHeight; py += 4) {
         for (int px = 0; px < kWidth; px += 4) {
-            const glm::dvec2 ndc(2.0 * (px + 0.5) / kWidth - 1.0, 1.0 - 2.0 * (py + 0.5) / kHeight);
-            const glm::dvec4 nearPoint = toWorld * glm::dvec4(ndc, -1.0, 1.0);
-            const glm::dvec4 farPoint = toWorld * glm::dvec4(ndc, 1.0, 1.0);
-            const glm::dvec3 origin = glm::dvec3(nearPoint) / nearPoint.w;
-            const glm::dvec3 dir = glm::normalize(glm::dvec3(farPoint) / farPoint.w - origin);
+            const auto [origin, dir] = pixelRay(toWorld, kWidth, kHeight, px, py);
             const auto hit = hitModel(model, glm::dmat4(framing.normalize), origin, dir);
             if (!hit || hit->minBarycentric < 0.02) continue;
             const Material& material =

@@ -315,4 +315,28 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
            << "\n  report:     " << goldenReportPage().string();
 }
 
+double srgbToLinear(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+double linearToSrgb(double c) {
+    c = std::clamp(c, 0.0, 1.0);
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+
+size_t pixelsUnlikeCorner(const Image& image, int threshold) {
+    size_t differing = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            for (int c = 0; c < image.channels; ++c) {
+                if (std::abs(int(image.at(x, y, c)) - int(image.at(0, 0, c))) > threshold) {
+                    ++differing;
+                    break;
+                }
+            }
+        }
+    }
+    return differing;
+}
+
 }  // namespace pbr::test

@@ -16,6 +16,15 @@
 
 namespace pbr::test {
 
+// The sRGB transfer function and its inverse (IEC 61966-2-1), for the reference tests' own
+// arithmetic; `linearToSrgb` clamps to [0, 1] first.
+double srgbToLinear(double c);
+double linearToSrgb(double c);
+
+// How many pixels differ from the top-left corner (the clear colour) by more than `threshold`
+// levels in some channel: whether a render drew anything.
+size_t pixelsUnlikeCorner(const Image& image, int threshold = 8);
+
 // The tolerance gate. A pixel "differs" when any colour channel is off by more than
 // channelThreshold levels; the image passes when few pixels differ and the PSNR stays high.
 // Tight enough that roughness + 0.05 or a missing light fails; loose enough for the last-bit

@@ -137,6 +137,15 @@ std::optional<ModelHit> hitModel(const Model& model, const glm::dmat4& world,
     return best;
 }
 
+std::pair<glm::dvec3, glm::dvec3> pixelRay(const glm::dmat4& toWorld, int width, int height,
+                                           int px, int py) {
+    const glm::dvec2 ndc(2.0 * (px + 0.5) / width - 1.0, 1.0 - 2.0 * (py + 0.5) / height);
+    const glm::dvec4 nearPoint = toWorld * glm::dvec4(ndc, -1.0, 1.0);
+    const glm::dvec4 farPoint = toWorld * glm::dvec4(ndc, 1.0, 1.0);
+    const glm::dvec3 origin = glm::dvec3(nearPoint) / nearPoint.w;
+    return {origin, glm::normalize(glm::dvec3(farPoint) / farPoint.w - origin)};
+}
+
 glm::dvec3 cameraRay(const glm::dvec3& front, double fovY, int width, int height, double x,
                      double y) {
     const glm::dvec3 right = glm::normalize(glm::cross(front, glm::dvec3(0.0, 1.0, 0.0)));

@@ -6,6 +6,7 @@
 // with the hit's barycentric weights, as perspective-correct interpolation does; the world
 // normal is the CPU's own inverse transpose of the model matrix times that, normalised.
 #include <optional>
+#include <utility>
 
 #include <glm/glm.hpp>
 
@@ -43,6 +44,11 @@ struct ModelHit {
 };
 std::optional<ModelHit> hitModel(const Model& model, const glm::dmat4& world,
                                  const glm::dvec3& origin, const glm::dvec3& direction);
+
+// The ray (origin on the near plane, unit direction) through the centre of pixel (px, py) of a
+// width x height image (y down), given `toWorld` = inverse(projection x view).
+std::pair<glm::dvec3, glm::dvec3> pixelRay(const glm::dmat4& toWorld, int width, int height,
+                                           int px, int py);
 
 // The unit direction through image point (x right, y down, in pixels) of a camera at `position`
 // looking along `front` (world up +Y), `fovY` radians, `width` x `height` pixels.
