@@ -56,7 +56,7 @@ TEST_P(GoldenImage, MatchesGolden) {
     const SampleRender rendered = render(golden.args, golden.golden + ".png");
     if (!unavailable.empty()) GTEST_SKIP() << unavailable;
     if (golden.minNonBlank > 0.0) expectNotBlank(readImage(rendered.image, 3), golden.minNonBlank);
-    EXPECT_TRUE(matchesGolden(golden.golden, rendered));
+    EXPECT_TRUE(matchesGolden(golden.golden, rendered)) << "the sample printed:\n" << rendered.run.err;
     const std::string bytes = readBytes(rendered.image);
     for (size_t i = 0; i < golden.sameBytesAs.size(); ++i) {
         const SampleRender other =
