@@ -102,18 +102,21 @@ int main(int argc, char** argv) try {
     shader.set("exposure", exposure);
 
     // 05's maps, from the same cache: irradiance 32^2, prefiltered 128^2 with 5 mips, the BRDF
-    // LUT 512^2. Units 5-7 hold them for the whole run.
+    // LUT 512^2. Units 5-7 hold them for the whole run. Every map is made (or read) here, before
+    // the first frame; the environment keeps a reference to the cache, so both live as long.
+    std::optional<pbr::IblCache> cache;
     std::optional<pbr::IblEnvironment> environment;
     std::optional<pbr::TextureCube> irradianceMap, prefilterMap;
     std::optional<pbr::Texture2D> brdfLUT;
     std::optional<pbr::Skybox> skybox;
     if (ibl) {
-        pbr::IblCache cache(pbr::cacheDir(app.options()));
-        environment.emplace(cache, pbr::environmentFile(app.options()));
+        cache.emplace(pbr::cacheDir(app.options()));
+        environment.emplace(*cache, pbr::environmentFile(app.options()));
+        environment->environmentMap();  // for the sky
         irradianceMap.emplace(environment->irradianceMap(32));
         prefilterMap.emplace(environment->prefilteredMap(128, 5, 1024));
-        brdfLUT.emplace(pbr::brdfLut(cache, 512, 1024, pbr::BrdfLutChannels::ScaleBias));
-        app.addPrecomputeSeconds(cache.computeSeconds());
+        brdfLUT.emplace(pbr::brdfLut(*cache, 512, 1024, pbr::BrdfLutChannels::ScaleBias));
+        app.addPrecomputeSeconds(cache->computeSeconds());
         pbr::useIblMaps(shader, *irradianceMap, *prefilterMap, *brdfLUT,
                         pbr::GltfRenderer::kFirstIblUnit);
         skybox.emplace();

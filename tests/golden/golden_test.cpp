@@ -168,7 +168,8 @@ TEST(Golden, HeadlessOutputIsBitIdentical) {
     const fs::path dir = testOutputDir("golden_determinism");
     const std::vector<std::string> args = {"--size", "640x360"};
     for (const std::string sample : {"01_lighting", "02_lighting_textured", "03_gltf_unlit",
-                                     "04_ibl_irradiance", "05_ibl_specular", "06_brdf_lut"}) {
+                                     "04_ibl_irradiance", "05_ibl_specular", "06_brdf_lut",
+                                     "07_gltf_metallic_roughness"}) {
         const SampleRender first = renderSample(sample, dir / (sample + ".first.png"), args);
         const SampleRender second = renderSample(sample, dir / (sample + ".second.png"), args);
         expectCleanRun(first);
