@@ -11,9 +11,9 @@
 // sphere_dielectric_0..4          the same with B = 0, baseColorFactor red (0.8, 0.1, 0.1): top
 //   (-2 .. 2; 0.5; 0)             left is smooth metal, bottom right rough dielectric
 // floor                           magFilter NEAREST (a 32 px pixel-art checker, one every 2 m:
-//   y = 0, x -3.5..3.5, z -2..2   checks of 0.5 m), REPEAT; a normalTexture without TANGENT (the
-//                                 renderer makes the tangents); the point light's range and the
-//                                 spot light's cone show on it
+//   y = 0, x -3.5..3.5, z -2..2   checks of 0.5 m), REPEAT; a normalTexture (tile joints) with
+//                                 TANGENT; the point light's range and the spot light's cone
+//                                 show on it
 // tile_panel                      normalTexture (scale 0.8) with TANGENT from the file;
 //   (0, 3, -0.8), a 1.3 x 1.3     occlusionTexture on TEXCOORD_1 (strength 0.9; an atlas laid out
 //   x 0.16 box                    unlike TEXCOORD_0: AO read with the wrong set misses the
@@ -80,9 +80,11 @@ constexpr float kPi = std::numbers::pi_v<float>;
 
 // A grid of (columns + 1) x (rows + 1) vertices over (s, t) in [0, 1]^2 at `position(s, t)`; the
 // front is cross(dP/ds, dP/dt) (counter-clockwise seen from it), normals from the derivatives;
-// uv = (s, 1 - t) mapped by `uvScale` (t runs up the image, as glTF's v runs down).
+// uv = (s, 1 - t) mapped by `uvScale` (t runs up the image, as glTF's v runs down). With
+// `tangents`, TANGENT too: xyz along dP/ds made normal to the normal, w = +1 when
+// cross(normal, tangent) runs along dP/dt (up the image), as glTF's bitangent does.
 MeshData sheet(int columns, int rows, const std::function<glm::vec3(float, float)>& position,
-               glm::vec2 uvScale = {1.0f, 1.0f}) {
+               glm::vec2 uvScale = {1.0f, 1.0f}, bool tangents = false) {
     MeshData mesh;
     constexpr float h = 1e-3f;
     for (int j = 0; j <= rows; ++j) {
@@ -91,8 +93,14 @@ MeshData sheet(int columns, int rows, const std::function<glm::vec3(float, float
             mesh.positions.push_back(position(s, t));
             const glm::vec3 ds = position(s + h, t) - position(s - h, t);
             const glm::vec3 dt = position(s, t + h) - position(s, t - h);
-            mesh.normals.push_back(glm::normalize(glm::cross(ds, dt)));
+            const glm::vec3 normal = glm::normalize(glm::cross(ds, dt));
+            mesh.normals.push_back(normal);
             mesh.uvs.push_back(glm::vec2(s, 1.0f - t) * uvScale);
+            if (tangents) {
+                const glm::vec3 tangent = glm::normalize(ds - normal * glm::dot(normal, ds));
+                const float w = glm::dot(glm::cross(normal, tangent), dt) >= 0.0f ? 1.0f : -1.0f;
+                mesh.tangents.push_back(glm::vec4(tangent, w));
+            }
         }
     }
     for (int j = 0; j < rows; ++j) {
@@ -501,12 +509,12 @@ int main(int argc, char** argv) try {
         }
     }
 
-    // The floor: pixel-art colour, tile normals, no tangents.
+    // The floor: pixel-art colour, tile normals with the file's tangents.
     {
         const MeshData floor = sheet(
             1, 1,
             [](float s, float t) { return glm::vec3(-3.5f + 7.0f * s, 0.0f, 2.0f - 4.0f * t); },
-            {3.5f, 2.0f});
+            {3.5f, 2.0f}, true);
         const int color = asset.texture("floor_color", floorColor(), kPixelArt);
         const int normal = asset.texture("floor_normal", normalMap(floorHeight(), 0.005f), kRepeat);
         const int material =

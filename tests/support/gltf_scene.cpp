@@ -46,18 +46,24 @@ std::string squareBuffersJson(float h) {
     for (const auto& c : corners)  // 128: 32 bytes
         append<float>(bytes, {0.5f * (c[0] + h) / (2 * h), 0.5f * (h - c[1]) / (2 * h)});
     append<std::uint16_t>(bytes, {0, 1, 2, 0, 2, 3});  // 160: 12 bytes
+    for (const auto& c : corners)                      // 172: 32 bytes, u mirrored
+        append<float>(bytes, {(h - c[0]) / (2 * h), (h - c[1]) / (2 * h)});
+    for (int i = 0; i < 4; ++i) append<float>(bytes, {0.0f, -1.0f, 0.0f, -1.0f});  // 204: 64
     const std::string hs = std::to_string(h);
     return R"("buffers":[{"byteLength":)" + std::to_string(bytes.size()) +
            R"(,"uri":"data:application/octet-stream;base64,)" + base64(bytes) + R"("}],
 "bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":160,"target":34962},
-  {"buffer":0,"byteOffset":160,"byteLength":12,"target":34963}],
+  {"buffer":0,"byteOffset":160,"byteLength":12,"target":34963},
+  {"buffer":0,"byteOffset":172,"byteLength":96,"target":34962}],
 "accessors":[
   {"bufferView":0,"byteOffset":0,"componentType":5126,"count":4,"type":"VEC3","min":[-)" +
            hs + ",-" + hs + R"(,0],"max":[)" + hs + "," + hs + R"(,0]},
   {"bufferView":0,"byteOffset":48,"componentType":5126,"count":4,"type":"VEC3"},
   {"bufferView":0,"byteOffset":96,"componentType":5126,"count":4,"type":"VEC2"},
   {"bufferView":0,"byteOffset":128,"componentType":5126,"count":4,"type":"VEC2"},
-  {"bufferView":1,"byteOffset":0,"componentType":5123,"count":6,"type":"SCALAR"}],
+  {"bufferView":1,"byteOffset":0,"componentType":5123,"count":6,"type":"SCALAR"},
+  {"bufferView":2,"byteOffset":0,"componentType":5126,"count":4,"type":"VEC2"},
+  {"bufferView":2,"byteOffset":32,"componentType":5126,"count":4,"type":"VEC4"}],
 )";
 }
 

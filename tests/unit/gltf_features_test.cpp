@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "support/gltf_scene.h"
 #include "support/process.h"
@@ -108,6 +110,43 @@ TEST(GltfFeatures, TextureTransformIsTheExtensionsMatrix) {
     }
     // no extension: the identity
     EXPECT_EQ(model.materials.at(0).metallicRoughnessTexture.transform, glm::mat3(1.0f));
+}
+
+// Tangents: the file's when it has them, else made along the texture coordinates. glTF's frame:
+// T along +u, bitangent cross(N, T) * w towards the image's top (-v). On the square (N = +Z,
+// v running down -y): u along +x gives T = +x, cross(+Z, +x) = +y = up, so w = +1; u mirrored
+// (along -x) gives T = -x, cross(+Z, -x) = -y, so w = -1; the file's (0, -1, 0, -1) is kept.
+TEST(GltfFeatures, MissingTangentsAreMadeAlongTheTextureCoordinates) {
+    const fs::path dir = testOutputDir("gltf_features_tangents");
+    writePng(dir / "n.png", Image{1, 1, 4, {128, 128, 255, 255}});
+    const Model model = loadModel(writeTextFile(dir, "tangents.gltf", R"({"asset":{"version":"2.0"},
+)" + squareBuffersJson(1.0f) + R"(
+"images":[{"uri":"n.png"}],"textures":[{"source":0}],
+"materials":[{"normalTexture":{"index":0}}],
+"meshes":[{"name":"upright","primitives":[{"attributes":{"POSITION":0,"NORMAL":1,"TEXCOORD_0":2},
+    "indices":4,"material":0}]},
+  {"name":"mirrored","primitives":[{"attributes":{"POSITION":0,"NORMAL":1,"TEXCOORD_0":5},
+    "indices":4,"material":0}]},
+  {"name":"file","primitives":[{"attributes":{"POSITION":0,"NORMAL":1,"TEXCOORD_0":2,
+    "TANGENT":6},"indices":4,"material":0}]}],
+"nodes":[{"mesh":0},{"mesh":1,"translation":[5,0,0]},{"mesh":2,"translation":[10,0,0]}],
+"scenes":[{"nodes":[0,1,2]}],"scene":0})"));
+    ASSERT_EQ(model.primitives.size(), 3u);
+    // told apart by their nodes' x: 0 upright, 5 mirrored, 10 the file's
+    const std::map<int, glm::vec4> expected = {
+        {0, {1, 0, 0, 1}}, {5, {-1, 0, 0, -1}}, {10, {0, -1, 0, -1}}};
+    std::set<int> seen;
+    for (const ModelPrimitive& primitive : model.primitives) {
+        const int x = int(std::lround(primitive.transform[3].x));
+        ASSERT_TRUE(expected.count(x)) << x;
+        seen.insert(x);
+        ASSERT_EQ(primitive.mesh.tangents.size(), 4u) << x;
+        for (const glm::vec4& t : primitive.mesh.tangents) {
+            expectNear(glm::vec3(t), glm::vec3(expected.at(x)), 1e-5f);
+            EXPECT_EQ(t.w, expected.at(x).w) << x;
+        }
+    }
+    EXPECT_EQ(seen.size(), 3u);
 }
 
 TEST(GltfFeatures, LightsArePlacedByTheirNodes) {
