@@ -81,6 +81,13 @@ GltfSurface metallicRoughnessSurface(const glm::vec3& position, const glm::vec3&
             glm::mix(glm::vec3(0.04f), baseColor, metallic), roughness};
 }
 
+GltfSurface specularGlossinessSurface(const glm::vec3& position, const glm::vec3& normal,
+                                      const glm::vec3& diffuse, const glm::vec3& specular,
+                                      float glossiness) {
+    const float strongest = std::max(specular.r, std::max(specular.g, specular.b));
+    return {position, normal, diffuse * (1.0f - strongest), specular, 1.0f - glossiness};
+}
+
 glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
                           const glm::vec3& radiance, const glm::vec3& diffuseColor,
                           const glm::vec3& F0, float roughness) {

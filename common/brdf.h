@@ -67,6 +67,11 @@ struct GltfSurface {
 // The metallic-roughness workflow's c_diff and F0 from a base colour and metallic.
 GltfSurface metallicRoughnessSurface(const glm::vec3& position, const glm::vec3& normal,
                                      const glm::vec3& baseColor, float metallic, float roughness);
+// KHR_materials_pbrSpecularGlossiness' conversion: F0 = specular, roughness = 1 - glossiness,
+// c_diff = diffuse x (1 - the largest component of specular).
+GltfSurface specularGlossinessSurface(const glm::vec3& position, const glm::vec3& normal,
+                                      const glm::vec3& diffuse, const glm::vec3& specular,
+                                      float glossiness);
 glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
                           const glm::vec3& radiance, const glm::vec3& diffuseColor,
                           const glm::vec3& F0, float roughness);

@@ -18,6 +18,7 @@ GltfRenderer::GltfRenderer(Shader& shader)
     : shader_(shader), white_(Image{1, 1, 4, {255, 255, 255, 255}}, ColorSpace::Linear) {
     shader_.set("baseColorTexture", int(kBaseColor));
     shader_.set("metallicRoughnessTexture", int(kMetallicRoughness));
+    shader_.set("specularGlossinessTexture", int(kMetallicRoughness));  // one workflow a material
     shader_.set("normalTexture", int(kNormal));
     shader_.set("occlusionTexture", int(kOcclusion));
     shader_.set("emissiveTexture", int(kEmissive));
@@ -52,7 +53,14 @@ void GltfRenderer::setMaterial(const GpuModel& model, const Material& m) {
         return own;
     };
     slot("baseColor", m.baseColorTexture, ColorSpace::Srgb, kBaseColor);
-    slot("metallicRoughness", m.metallicRoughnessTexture, ColorSpace::Linear, kMetallicRoughness);
+    // unit 1: the workflow's second texture
+    if (m.specularGlossiness) {
+        slot("specularGlossiness", m.specularGlossinessTexture, ColorSpace::Srgb,
+             kMetallicRoughness);
+    } else {
+        slot("metallicRoughness", m.metallicRoughnessTexture, ColorSpace::Linear,
+             kMetallicRoughness);
+    }
     shader_.set("hasNormalTexture",
                 slot("normal", m.normalTexture, ColorSpace::Linear, kNormal) ? 1 : 0);
     slot("occlusion", m.occlusionTexture, ColorSpace::Linear, kOcclusion);
@@ -60,6 +68,9 @@ void GltfRenderer::setMaterial(const GpuModel& model, const Material& m) {
     shader_.set("baseColorFactor", m.baseColorFactor);
     shader_.set("metallicFactor", m.metallicFactor);
     shader_.set("roughnessFactor", m.roughnessFactor);
+    shader_.set("specularGlossiness", m.specularGlossiness ? 1 : 0);
+    shader_.set("specularFactor", m.specularFactor);
+    shader_.set("glossinessFactor", m.glossinessFactor);
     shader_.set("normalScale", m.normalScale);
     shader_.set("occlusionStrength", m.occlusionStrength);
     shader_.set("emissiveFactor", m.emissiveFactor);

@@ -104,12 +104,19 @@ struct Reader {
         int shading = 0;
         if (m->Get(AI_MATKEY_SHADING_MODEL, shading) == AI_SUCCESS)
             out.unlit = shading == aiShadingMode_Unlit;
+        // KHR_materials_pbrSpecularGlossiness: told by its glossiness factor (such a material
+        // still reports metallic and roughness 1, and base colour 1 from the absent
+        // pbrMetallicRoughness). Its diffuse factor and texture are on the diffuse slots.
+        out.specularGlossiness =
+            m->Get(AI_MATKEY_GLOSSINESS_FACTOR, out.glossinessFactor) == AI_SUCCESS;
         aiColor4D color;
-        if (m->Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
-            m->Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
+        if (out.specularGlossiness ? m->Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS
+                                   : (m->Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
+                                      m->Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)) {
             out.baseColorFactor = {color.r, color.g, color.b, color.a};
         }
-        out.baseColorTexture = texture(m, aiTextureType_BASE_COLOR);
+        out.baseColorTexture =
+            texture(m, out.specularGlossiness ? aiTextureType_DIFFUSE : aiTextureType_BASE_COLOR);
         if (!out.baseColorTexture.present())
             out.baseColorTexture = texture(m, aiTextureType_DIFFUSE);
         m->Get(AI_MATKEY_METALLIC_FACTOR, out.metallicFactor);
@@ -124,8 +131,8 @@ struct Reader {
         if (m->Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS) {
             out.emissiveFactor = {emissive.r, emissive.g, emissive.b};
         }
-        if (m->Get(AI_MATKEY_GLOSSINESS_FACTOR, out.glossinessFactor) == AI_SUCCESS) {
-            out.specularGlossiness = true;
+        if (out.specularGlossiness) {
+            // the factor is $clr.specular; AI_MATKEY_SPECULAR_FACTOR is never set for glTF
             aiColor3D specular;
             if (m->Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) {
                 out.specularFactor = {specular.r, specular.g, specular.b};

@@ -56,7 +56,8 @@ struct Material {
     float occlusionStrength = 1.0f;
     TextureRef emissiveTexture;  // sRGB
     glm::vec3 emissiveFactor{0.0f};
-    // KHR_materials_pbrSpecularGlossiness (the diffuse factor/texture are the base colour above)
+    // KHR_materials_pbrSpecularGlossiness: the diffuse factor and texture are baseColorFactor and
+    // baseColorTexture above (sRGB; alpha as in the metallic-roughness workflow)
     bool specularGlossiness = false;
     glm::vec3 specularFactor{1.0f};
     float glossinessFactor = 1.0f;

@@ -113,4 +113,34 @@ std::vector<std::pair<std::string, std::string>> Buffer::members(const std::stri
             {"accessors", array(accessors_)}};
 }
 
+std::string quoted(const std::string& text) {
+    return "\"" + text + "\"";
+}
+std::string vec(glm::vec3 v) {
+    return numbers({v.x, v.y, v.z});
+}
+std::string vec(glm::vec4 v) {
+    return numbers({v.x, v.y, v.z, v.w});
+}
+std::string rotation(const glm::quat& q) {
+    return numbers({q.x, q.y, q.z, q.w});
+}
+
+MeshData gridSphere(float radius) {
+    MeshData mesh = uvSphereTriangles(48, 24);
+    mesh.tangents.clear();
+    for (glm::vec3& p : mesh.positions) p *= radius;
+    std::vector<std::uint32_t> kept;
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+        const glm::vec3 &a = mesh.positions[mesh.indices[i]],
+                        &b = mesh.positions[mesh.indices[i + 1]],
+                        &c = mesh.positions[mesh.indices[i + 2]];
+        if (glm::length(glm::cross(b - a, c - a)) > 1e-9f)
+            kept.insert(kept.end(), mesh.indices.begin() + long(i),
+                        mesh.indices.begin() + long(i) + 3);
+    }
+    mesh.indices = kept;
+    return mesh;
+}
+
 }  // namespace pbr::gltf

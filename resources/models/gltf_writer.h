@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "mesh.h"
 
@@ -27,6 +28,17 @@ std::string numbers(std::initializer_list<float> values);
 std::string array(const std::vector<std::string>& items, const char* separator = ",");
 // A whole .gltf file: "{", the members ("\"key\":value") one a line, "}".
 std::string document(const std::vector<std::pair<std::string, std::string>>& members);
+
+// "\"text\"" (the text is ours: no escaping needed).
+std::string quoted(const std::string& text);
+// "[x,y,z]", "[x,y,z,w]", and a rotation as glTF writes it ("[x,y,z,w]").
+std::string vec(glm::vec3 v);
+std::string vec(glm::vec4 v);
+std::string rotation(const glm::quat& q);
+
+// The sphere of the samples' grids (48 x 24), radius `radius`, without the triangles that
+// collapse to a point at the poles; POSITION, NORMAL, TEXCOORD_0 only.
+MeshData gridSphere(float radius);
 
 // The binary buffer: each addition is one buffer view at a 4-byte aligned offset.
 class Buffer {

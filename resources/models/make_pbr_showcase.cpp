@@ -69,6 +69,9 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace gltf = pbr::gltf;
+using gltf::quoted;
+using gltf::vec;
+using gltf::rotation;
 using pbr::Image;
 using pbr::MeshData;
 using pbr::procedural::Field;
@@ -109,25 +112,6 @@ MeshData sheet(int columns, int rows, const std::function<glm::vec3(float, float
             mesh.indices.insert(mesh.indices.end(), {a, a + 1, c + 1, a, c + 1, c});
         }
     }
-    return mesh;
-}
-
-// The sphere of the samples' grids, radius `radius`, without the triangles that collapse to a
-// point at the poles; POSITION, NORMAL, TEXCOORD_0 only.
-MeshData sphere(float radius) {
-    MeshData mesh = pbr::uvSphereTriangles(48, 24);
-    mesh.tangents.clear();
-    for (glm::vec3& p : mesh.positions) p *= radius;
-    std::vector<std::uint32_t> kept;
-    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
-        const glm::vec3 &a = mesh.positions[mesh.indices[i]],
-                        &b = mesh.positions[mesh.indices[i + 1]],
-                        &c = mesh.positions[mesh.indices[i + 2]];
-        if (glm::length(glm::cross(b - a, c - a)) > 1e-9f)
-            kept.insert(kept.end(), mesh.indices.begin() + long(i),
-                        mesh.indices.begin() + long(i) + 3);
-    }
-    mesh.indices = kept;
     return mesh;
 }
 
@@ -414,18 +398,6 @@ Image labelColor() {
 
 // --- the document --------------------------------------------------------------------------
 
-std::string quoted(const std::string& text) {
-    return "\"" + text + "\"";
-}
-std::string vec(glm::vec3 v) {
-    return gltf::numbers({v.x, v.y, v.z});
-}
-std::string vec(glm::vec4 v) {
-    return gltf::numbers({v.x, v.y, v.z, v.w});
-}
-std::string rotation(const glm::quat& q) {
-    return gltf::numbers({q.x, q.y, q.z, q.w});
-}
 glm::quat yaw(float degrees) {
     return glm::angleAxis(glm::radians(degrees), glm::vec3(0, 1, 0));
 }
@@ -484,7 +456,7 @@ int main(int argc, char** argv) try {
     fs::create_directories(asset.dir);
 
     // Ten spheres, one geometry: metals on top, dielectrics below, roughness rising to the right.
-    const std::string spherePrimitive = asset.buffer.addPrimitive(sphere(0.4f));
+    const std::string spherePrimitive = asset.buffer.addPrimitive(gltf::gridSphere(0.4f));
     const int roughnessBytes[5] = {0, 64, 128, 191, 255};
     for (int row = 0; row < 2; ++row) {
         const bool metal = row == 0;

@@ -1,10 +1,12 @@
 // A glTF 2.0 material read at one fragment (the specification's section 3.9 and Appendix B):
 // every input a factor times a texture, each texture read at its own texture coordinate set
 // through its KHR_texture_transform matrix. Written once for the glTF samples; it hands the
-// shading a SurfaceMaterial, the one description both workflows end in. The including shader
-// declares the inputs WorldPos, Normal, Tangent, TexCoords0, TexCoords1 and VertexColor.
-// Texture units are fixed: 0 base colour, 1 metallic-roughness, 2 normal, 3 occlusion,
-// 4 emissive (bound by pbr::GltfRenderer, common/gltf_renderer.h).
+// shading a SurfaceMaterial, the one description both workflows end in: metallic-roughness
+// (the core material, sample 07) and KHR_materials_pbrSpecularGlossiness (sample 08). The
+// including shader declares the inputs WorldPos, Normal, Tangent, TexCoords0, TexCoords1 and
+// VertexColor. Texture units are fixed: 0 base colour (or diffuse), 1 metallic-roughness (or
+// specular-glossiness), 2 normal, 3 occlusion, 4 emissive (bound by pbr::GltfRenderer,
+// common/gltf_renderer.h).
 #include "normal_mapping.glsl"
 
 const int ALPHA_OPAQUE = 0;
@@ -22,6 +24,15 @@ uniform float roughnessFactor;
 uniform sampler2D metallicRoughnessTexture;  // G = roughness, B = metallic (linear)
 uniform int metallicRoughnessUvSet;
 uniform mat3 metallicRoughnessUvTransform;
+
+// KHR_materials_pbrSpecularGlossiness: its diffuse factor and texture are baseColorFactor and
+// baseColorTexture above; unit 1 holds its specular-glossiness texture.
+uniform bool specularGlossiness;
+uniform vec3 specularFactor;
+uniform float glossinessFactor;
+uniform sampler2D specularGlossinessTexture;  // RGB specular (sRGB), A glossiness (linear)
+uniform int specularGlossinessUvSet;
+uniform mat3 specularGlossinessUvTransform;
 
 uniform bool hasNormalTexture;
 uniform float normalScale;
@@ -74,10 +85,11 @@ vec3 gltfShadingNormal()
     return normalFromMapWithTangent(normalize(tangentNormal), normal, tangent);
 }
 
-// The metallic-roughness workflow. MASK discards what lies below the cutoff here.
-SurfaceMaterial readMetallicRoughness()
+// The material at this fragment, in either workflow. MASK discards what lies below the cutoff.
+SurfaceMaterial readGltfMaterial()
 {
     SurfaceMaterial m;
+    // base colour, or the diffuse colour of specular-glossiness (its alpha is the opacity)
     vec4 base = baseColorFactor * VertexColor *
                 texture(baseColorTexture, textureUv(baseColorUvSet, baseColorUvTransform));
     if (alphaMode == ALPHA_MASK && base.a < alphaCutoff)
@@ -85,12 +97,27 @@ SurfaceMaterial readMetallicRoughness()
     m.alpha = alphaMode == ALPHA_BLEND ? base.a : 1.0;
     m.baseColor = base.rgb;
 
-    vec4 mr = texture(metallicRoughnessTexture,
-                      textureUv(metallicRoughnessUvSet, metallicRoughnessUvTransform));
-    float metallic = clamp(metallicFactor * mr.b, 0.0, 1.0);
-    m.roughness = clamp(roughnessFactor * mr.g, 0.0, 1.0);
-    m.diffuseColor = base.rgb * (1.0 - metallic);
-    m.F0 = mix(vec3(0.04), base.rgb, metallic);
+    if (specularGlossiness)
+    {
+        // the extension's conversion: F0 = specular, roughness = 1 - glossiness, and the
+        // diffuse colour keeps what the specular reflection leaves: 1 - max(specular)
+        vec4 sg = texture(specularGlossinessTexture,
+                          textureUv(specularGlossinessUvSet, specularGlossinessUvTransform));
+        vec3 specular = clamp(specularFactor * sg.rgb, 0.0, 1.0);
+        m.F0 = specular;
+        m.roughness = clamp(1.0 - glossinessFactor * sg.a, 0.0, 1.0);
+        m.diffuseColor = base.rgb * (1.0 - max(specular.r, max(specular.g, specular.b)));
+    }
+    else
+    {
+        // Appendix B: c_diff = lerp(base, black, metallic), F0 = lerp(0.04, base, metallic)
+        vec4 mr = texture(metallicRoughnessTexture,
+                          textureUv(metallicRoughnessUvSet, metallicRoughnessUvTransform));
+        float metallic = clamp(metallicFactor * mr.b, 0.0, 1.0);
+        m.roughness = clamp(roughnessFactor * mr.g, 0.0, 1.0);
+        m.diffuseColor = base.rgb * (1.0 - metallic);
+        m.F0 = mix(vec3(0.04), base.rgb, metallic);
+    }
 
     float ao = texture(occlusionTexture, textureUv(occlusionUvSet, occlusionUvTransform)).r;
     m.occlusion = 1.0 + occlusionStrength * (ao - 1.0);

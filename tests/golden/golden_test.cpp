@@ -61,8 +61,13 @@ TEST_P(GoldenImage, MatchesGolden) {
     for (size_t i = 0; i < golden.sameBytesAs.size(); ++i) {
         const SampleRender other =
             render(golden.sameBytesAs[i], "same" + std::to_string(i) + ".png");
+        auto joined = [](const std::vector<std::string>& args) {
+            std::string text;
+            for (const std::string& arg : args) text += (text.empty() ? "" : " ") + arg;
+            return text.empty() ? std::string("(no flags)") : text;
+        };
         EXPECT_TRUE(readBytes(other.image) == bytes)
-            << golden.sameBytesAs[i][1] << " draws differently from " << golden.args[1];
+            << joined(golden.sameBytesAs[i]) << " draws differently from " << joined(golden.args);
     }
 }
 

@@ -37,7 +37,8 @@ constexpr int kSize = 400;  // square renders: --size 400x400
 // 07 on `model`, image-based light off, no tone mapping, no MSAA, from `eye` (looking at the
 // model's centre).
 Image render07(const fs::path& dir, const fs::path& model, const glm::vec3& eye,
-               std::vector<std::string> extra = {}) {
+               std::vector<std::string> extra = {},
+               const std::string& sample = "07_gltf_metallic_roughness") {
     std::vector<std::string> args = {"--model", model.string(), "--no-ibl", "--tonemap", "none",
                                      "--msaa", "0", "--size",
                                      std::to_string(kSize) + "x" + std::to_string(kSize),
@@ -45,8 +46,8 @@ Image render07(const fs::path& dir, const fs::path& model, const glm::vec3& eye,
                                      std::to_string(eye.x) + "," + std::to_string(eye.y) + "," +
                                          std::to_string(eye.z)};
     args.insert(args.end(), extra.begin(), extra.end());
-    const SampleRender render = renderSample("07_gltf_metallic_roughness",
-                                             dir / (model.stem().string() + ".png"), args);
+    const SampleRender render =
+        renderSample(sample, dir / (model.stem().string() + ".png"), args);
     EXPECT_EQ(render.run.exitCode, 0) << render.run.err;
     EXPECT_EQ(render.run.err.find("GL error"), std::string::npos) << render.run.err;
     return readImage(render.image, 3);
@@ -257,23 +258,21 @@ TEST(Reference, Gltf07MaskKeepsTexelsAtOrAboveTheCutoff) {
     EXPECT_GT(dropped, 1500);
 }
 
-// The project's showcase: its ten spheres, each with its own solid metallic-roughness texture
-// (read here on the CPU: G roughness, B metallic) under the file's own lights.
+// Spheres of one of the project's assets against the CPU: every other pixel whose ray meets a
+// sphere named "<prefix>..." (and not near a triangle's edge), shaded by the CPU from the
+// surface `surfaceOf` gives (nothing: left out) under the file's own lights.
 struct SphereCheck {
     std::map<std::string, int> compared;  // pixels, by material
     int total = 0, worst = 0;
 };
-// `materialOf` gives a sphere's metallic and roughness, or false to leave the sphere out.
-SphereCheck compareShowcaseSpheres(
-    const std::string& name,
-    const std::function<bool(const Material&, const Image& mr, float& metallic, float& roughness)>&
-        materialOf) {
-    const fs::path dir = testOutputDir("reference_07_spheres_" + name);
-    const fs::path file = modelDir() / "pbr_showcase.gltf";
+using SurfaceOf = std::function<std::optional<cpu::GltfSurface>(
+    const Model&, const Material&, const glm::vec3& position, const glm::vec3& normal)>;
+SphereCheck compareSpheres(const fs::path& dir, const std::string& sample, const fs::path& file,
+                           const std::string& prefix, const SurfaceOf& surfaceOf) {
     const Model model = loadModel(file);
     const glm::vec3 centre = 0.5f * (model.boundsMin + model.boundsMax);
     const glm::vec3 eye = centre + glm::vec3(0.0f, 0.2f, 4.0f);
-    const Image image = render07(dir, file, eye);
+    const Image image = render07(dir, file, eye, {}, sample);
     const Rays rays(model, eye);
     SphereCheck check;
     for (int py = 0; py < kSize; ++py) {
@@ -283,15 +282,12 @@ SphereCheck compareShowcaseSpheres(
             if (!hit || hit->minBarycentric < 0.01) continue;
             const Material& material =
                 model.materials[size_t(model.primitives[size_t(hit->primitive)].material)];
-            if (!material.name.starts_with("sphere_")) continue;
-            const Image mr = loadTextureImage(model, material.metallicRoughnessTexture, 3);
-            float metallic = 0.0f, roughness = 0.0f;
-            if (!materialOf(material, mr, metallic, roughness)) continue;
+            if (!material.name.starts_with(prefix)) continue;
             const glm::vec3 position(hit->position);
+            if (!surfaceOf(model, material, position, glm::vec3(hit->normal))) continue;
             const Shade shade = [&](const glm::vec3& normal) {
-                const cpu::GltfSurface surface = cpu::metallicRoughnessSurface(
-                    position, normal, glm::vec3(material.baseColorFactor), metallic, roughness);
-                return cpu::shadePunctualLights(surface, eye, model.lights);
+                return cpu::shadePunctualLights(*surfaceOf(model, material, position, normal), eye,
+                                                model.lights);
             };
             const auto expected = expectedBytes(shade, glm::vec3(hit->normal));
             if (!expected) continue;
@@ -307,6 +303,27 @@ SphereCheck compareShowcaseSpheres(
         }
     }
     return check;
+}
+
+// The 07 showcase's ten spheres, each with its own solid metallic-roughness texture (read here
+// on the CPU: G roughness, B metallic). `materialOf` gives a sphere's metallic and roughness,
+// or false to leave the sphere out.
+SphereCheck compareShowcaseSpheres(
+    const std::string& name,
+    const std::function<bool(const Material&, const Image& mr, float& metallic, float& roughness)>&
+        materialOf) {
+    return compareSpheres(
+        testOutputDir("reference_07_spheres_" + name), "07_gltf_metallic_roughness",
+        modelDir() / "pbr_showcase.gltf", "sphere_",
+        [&](const Model& model, const Material& material, const glm::vec3& position,
+            const glm::vec3& normal) -> std::optional<cpu::GltfSurface> {
+            const Image mr = loadTextureImage(model, material.metallicRoughnessTexture, 3);
+            float metallic = 0.0f, roughness = 0.0f;
+            if (!materialOf(material, mr, metallic, roughness)) return std::nullopt;
+            return cpu::metallicRoughnessSurface(position, normal,
+                                                 glm::vec3(material.baseColorFactor), metallic,
+                                                 roughness);
+        });
 }
 
 TEST(Reference, Gltf07ShowcaseSpheresMatchTheCpu) {
@@ -345,6 +362,65 @@ TEST(Reference, Gltf07MetallicRoughnessChannels) {
     for (const char* name : {"sphere_metal_0", "sphere_dielectric_4"}) {
         std::printf("%s: %d pixels compared\n", name, check.compared.at(name));
         EXPECT_GT(check.compared.at(name), 150) << name;
+    }
+}
+
+// 08's spheres in the specular-glossiness workflow (factors only) against the CPU: the
+// extension's conversion (F0 = specular, roughness = 1 - glossiness, c_diff = diffuse x
+// (1 - max(specular))) through 07's BRDF.
+TEST(Reference, Gltf08SpecularGlossinessSpheresMatchTheCpu) {
+    const SphereCheck check = compareSpheres(
+        testOutputDir("reference_08_spheres"), "08_gltf_specular_glossiness",
+        modelDir() / "pbr_workflows_sg.gltf", "sg_",
+        [](const Model&, const Material& m, const glm::vec3& position,
+           const glm::vec3& normal) -> std::optional<cpu::GltfSurface> {
+            EXPECT_TRUE(m.specularGlossiness) << m.name;
+            if (m.baseColorTexture.present() || m.specularGlossinessTexture.present())
+                return std::nullopt;  // the textured ones: the halves test below
+            return cpu::specularGlossinessSurface(position, normal, glm::vec3(m.baseColorFactor),
+                                                  m.specularFactor, m.glossinessFactor);
+        });
+    std::printf("08 spheres: %d pixels compared, worst channel difference %d/255\n", check.total,
+                check.worst);
+    EXPECT_GT(check.total, 3000);
+    EXPECT_EQ(check.compared.size(), 8u);
+}
+
+// Where both workflows can say the same material, they draw the same: 08's two halves, each in
+// a file of its own at the same place, under the same camera, agree within 1/255 at every pixel,
+// with all the light (IBL and the file's sun) and with the sun alone (where the dark background
+// leaves only the spheres unlike the corner: they must cover a good part of the picture).
+TEST(Reference, Gltf08BothWorkflowsDrawTheSameMaterials) {
+    const fs::path dir = testOutputDir("reference_08_halves");
+    for (const bool ibl : {true, false}) {
+        std::vector<Image> images;
+        for (const char* half : {"pbr_workflows_mr", "pbr_workflows_sg"}) {
+            std::vector<std::string> args = {"--model", (modelDir() / (std::string(half) + ".gltf")).string(),
+                                             "--size", "640x360"};
+            if (!ibl) args.push_back("--no-ibl");
+            const SampleRender render = renderSample(
+                "08_gltf_specular_glossiness",
+                dir / (std::string(half) + (ibl ? "" : "_no_ibl") + ".png"), args);
+            ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+            images.push_back(readImage(render.image, 3));
+        }
+        const Image& mr = images[0];
+        const Image& sg = images[1];
+        ASSERT_EQ(mr.pixels.size(), sg.pixels.size());
+        int worst = 0;
+        size_t off = 0;
+        for (size_t i = 0; i < mr.pixels.size(); ++i) {
+            const int diff = std::abs(int(mr.pixels[i]) - int(sg.pixels[i]));
+            worst = std::max(worst, diff);
+            off += diff > 1 ? 1 : 0;
+        }
+        const double covered = double(pixelsUnlikeCorner(mr)) / double(mr.width * mr.height);
+        std::printf("08 halves%s: worst channel difference %d/255; %.1f %% unlike the corner\n",
+                    ibl ? "" : " (sun only)", worst, 100.0 * covered);
+        EXPECT_LE(worst, 1) << off << " channel values differ by more than 1";
+        if (!ibl) {
+            EXPECT_GT(covered, 0.05);
+        }
     }
 }
 

@@ -188,5 +188,19 @@ TEST(Resources, PbrShowcaseGltfPassesKhronosValidatorWithoutWarnings) {
     std::printf("gltf-validator: %s", v.run.out.c_str());
 }
 
+// Sample 08's asset in its four files (both halves, the required copy, each half alone): no
+// errors, no warnings.
+TEST(Resources, PbrWorkflowsGltfPassesKhronosValidatorWithoutWarnings) {
+    for (const char* file : {"pbr_workflows.gltf", "pbr_workflows_required.gltf",
+                             "pbr_workflows_mr.gltf", "pbr_workflows_sg.gltf"}) {
+        const ValidatorRun v = validateGltf(modelDir() / file, {"--strict"});
+        if (!v.skipped.empty()) GTEST_SKIP() << v.skipped;
+        EXPECT_EQ(v.run.exitCode, 0) << file << v.run.out << v.run.err;
+        EXPECT_NE(v.run.out.find("errors 0 "), std::string::npos) << file << v.run.out;
+        EXPECT_NE(v.run.out.find("unexpected warnings 0\n"), std::string::npos) << file << v.run.out;
+        std::printf("gltf-validator %s: %s", file, v.run.out.c_str());
+    }
+}
+
 }  // namespace
 }  // namespace pbr::test

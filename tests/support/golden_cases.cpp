@@ -41,6 +41,21 @@ std::vector<GoldenCase> goldenCases() {
          0.1,
          {},
          true},
+        // 08: the two workflows side by side; the copy that lists the extension as required
+        // draws the same bytes.
+        {"08_gltf_specular_glossiness",
+         "08_gltf_specular_glossiness",
+         {},
+         0.05,
+         {{"--model", (modelDir() / "pbr_workflows_required.gltf").string()}}},
+        {"08_box_textured_spec_gloss",
+         "08_gltf_specular_glossiness",
+         {"--model",
+          (kAssimpGltf / "BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf").string(),
+          "--size", "480x270", "--camera", "1.2,0.9,1.6"},
+         0.1,
+         {},
+         true},
     };
     // The four tone mappers on the showcase, side by side in 07's README.
     for (const char* mapper : {"khronos-neutral", "aces", "reinhard", "none"}) {

@@ -170,6 +170,53 @@ TEST(GltfFeatures, LightsArePlacedByTheirNodes) {
     expectNear(sun.direction, {-1.0f, 0.0f, 0.0f}, 1e-5f);
 }
 
+// KHR_materials_pbrSpecularGlossiness beside a metallic-roughness material in one file. Assimp
+// puts the specular factor on $clr.specular (AI_MATKEY_COLOR_SPECULAR) and never sets
+// AI_MATKEY_SPECULAR_FACTOR; a loader that reads the latter gets a factor of 1. The diffuse
+// factor and texture come through the diffuse slots; the metallic-roughness material beside it
+// keeps its own numbers. Expected values: the JSON below.
+TEST(GltfFeatures, SpecularGlossinessFactorsAndTexturesAreRead) {
+    const fs::path dir = testOutputDir("gltf_features_spec_gloss");
+    writePng(dir / "diffuse.png", Image{1, 1, 4, {10, 20, 30, 255}});
+    writePng(dir / "specgloss.png", Image{1, 1, 4, {40, 50, 60, 128}});
+    writePng(dir / "base.png", Image{1, 1, 4, {70, 80, 90, 255}});
+    const Model model = loadModel(writeTextFile(dir, "spec_gloss.gltf", R"({"asset":{"version":"2.0"},
+"extensionsUsed":["KHR_materials_pbrSpecularGlossiness"],
+)" + squareBuffersJson(1.0f) + R"(
+"images":[{"uri":"diffuse.png"},{"uri":"specgloss.png"},{"uri":"base.png"}],
+"textures":[{"source":0},{"source":1},{"source":2}],
+"materials":[{"name":"sg","extensions":{"KHR_materials_pbrSpecularGlossiness":{
+    "diffuseFactor":[0.5,0.25,0.125,0.8],"diffuseTexture":{"index":0},
+    "specularFactor":[0.3,0.5,0.7],"glossinessFactor":0.6,
+    "specularGlossinessTexture":{"index":1,"texCoord":1}}}},
+  {"name":"mr","pbrMetallicRoughness":{"baseColorFactor":[0.9,0.8,0.7,1],
+    "baseColorTexture":{"index":2},"metallicFactor":0.3,"roughnessFactor":0.4}}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) + "," + squarePrimitiveJson(1) + R"(]}],
+"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})"));
+    const Material* sg = nullptr;
+    const Material* mr = nullptr;
+    for (const Material& m : model.materials) {
+        if (m.name == "sg") sg = &m;
+        if (m.name == "mr") mr = &m;
+    }
+    ASSERT_TRUE(sg && mr);
+    EXPECT_TRUE(sg->specularGlossiness);
+    expectNear(sg->specularFactor, {0.3f, 0.5f, 0.7f}, 1e-6f);
+    EXPECT_FLOAT_EQ(sg->glossinessFactor, 0.6f);
+    expectNear(glm::vec3(sg->baseColorFactor), {0.5f, 0.25f, 0.125f}, 1e-6f);  // the diffuse
+    EXPECT_FLOAT_EQ(sg->baseColorFactor.a, 0.8f);
+    EXPECT_EQ(sg->baseColorTexture.file.filename(), "diffuse.png");
+    EXPECT_EQ(sg->specularGlossinessTexture.file.filename(), "specgloss.png");
+    EXPECT_EQ(sg->specularGlossinessTexture.uvSet, 1);
+
+    EXPECT_FALSE(mr->specularGlossiness);
+    expectNear(glm::vec3(mr->baseColorFactor), {0.9f, 0.8f, 0.7f}, 1e-6f);
+    EXPECT_FLOAT_EQ(mr->metallicFactor, 0.3f);
+    EXPECT_FLOAT_EQ(mr->roughnessFactor, 0.4f);
+    EXPECT_EQ(mr->baseColorTexture.file.filename(), "base.png");
+    EXPECT_FALSE(mr->specularGlossinessTexture.present());
+}
+
 TEST(GltfFeatures, ExtensionListsNameWhatIsNotDrawn) {
     const Model model = loadModel(writeFeatureFile(testOutputDir("gltf_features_extensions")));
     EXPECT_EQ(model.extensionsRequired, std::vector<std::string>{"KHR_materials_emissive_strength"});

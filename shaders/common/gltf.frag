@@ -1,8 +1,10 @@
 #version 330 core
-// The cookbook's "metallic-roughness" recipe, as the glTF 2.0 specification defines the material:
-// image-based light (the exact split sum of 05's maps) times occlusion, plus the file's punctual
-// lights through the Appendix B BRDF, plus emission; then exposure and a tone mapper. The render
-// target is sRGB: this writes linear values and the GL encodes them.
+// The cookbook's glTF PBR recipes ("metallic-roughness", sample 07; "specular-glossiness",
+// sample 08), as the glTF 2.0 specification defines the material: image-based light (the exact
+// split sum of 05's maps) times occlusion, plus the file's punctual lights through the
+// Appendix B BRDF, plus emission; then exposure and a tone mapper. Either workflow arrives as one
+// SurfaceMaterial (gltf_material.glsl). The render target is sRGB: this writes linear values and
+// the GL encodes them.
 out vec4 FragColor;
 in vec3 WorldPos;
 in vec3 Normal;
@@ -25,7 +27,7 @@ uniform float exposure;
 
 void main()
 {
-    SurfaceMaterial m = readMetallicRoughness();
+    SurfaceMaterial m = readGltfMaterial();
     vec3 color = m.baseColor;
     if (!unlit)
     {
