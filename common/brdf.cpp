@@ -36,29 +36,85 @@ glm::vec3 fresnelSchlick(float cosTheta, const glm::vec3& F0) {
     return F0 + (1.0f - F0) * std::pow(std::clamp(1.0f - cosTheta, 0.0f, 1.0f), 5.0f);
 }
 
+glm::vec3 directLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                      const glm::vec3& radiance, const glm::vec3& albedo, float metallic,
+                      float roughness) {
+    const glm::vec3 F0 = glm::mix(glm::vec3(0.04f), albedo, metallic);
+    const glm::vec3 H = glm::normalize(V + L);
+    const float NDF = DistributionGGX(N, H, roughness);
+    const float G = GeometrySmith(N, V, L, roughness);
+    const glm::vec3 F = fresnelSchlick(std::max(glm::dot(H, V), 0.0f), F0);
+    const float NdotV = std::max(glm::dot(N, V), 0.0f);
+    const float NdotL = std::max(glm::dot(N, L), 0.0f);
+    // + 0.001 keeps the denominator off zero at grazing angles, as in the text.
+    const glm::vec3 specular = NDF * G * F / (4.0f * NdotV * NdotL + 0.001f);
+    const glm::vec3 kD = (glm::vec3(1.0f) - F) * (1.0f - metallic);
+    return (kD * albedo / PI + specular) * radiance * NdotL;
+}
+
 glm::vec3 shadePointLights(const SurfacePoint& s, const glm::vec3& cameraPosition,
                            std::span<const PointLight> lights) {
-    const glm::vec3 N = s.normal;
     const glm::vec3 V = glm::normalize(cameraPosition - s.position);
-    const glm::vec3 F0 = glm::mix(glm::vec3(0.04f), s.albedo, s.metallic);
     glm::vec3 Lo(0.0f);
     for (const PointLight& light : lights) {
         const glm::vec3 L = glm::normalize(light.position - s.position);
-        const glm::vec3 H = glm::normalize(V + L);
         const float distance = glm::length(light.position - s.position);
-        const glm::vec3 radiance = light.color / (distance * distance);
-
-        const float NDF = DistributionGGX(N, H, s.roughness);
-        const float G = GeometrySmith(N, V, L, s.roughness);
-        const glm::vec3 F = fresnelSchlick(std::max(glm::dot(H, V), 0.0f), F0);
-        const float NdotV = std::max(glm::dot(N, V), 0.0f);
-        const float NdotL = std::max(glm::dot(N, L), 0.0f);
-        // + 0.001 keeps the denominator off zero at grazing angles, as in the text.
-        const glm::vec3 specular = NDF * G * F / (4.0f * NdotV * NdotL + 0.001f);
-        const glm::vec3 kD = (glm::vec3(1.0f) - F) * (1.0f - s.metallic);
-        Lo += (kD * s.albedo / PI + specular) * radiance * NdotL;
+        Lo += directLight(s.normal, V, L, light.color / (distance * distance), s.albedo,
+                          s.metallic, s.roughness);
     }
     return glm::vec3(0.03f) * s.albedo * s.ao + Lo;
+}
+
+float lightAttenuation(const PackedLight& light, float d) {
+    return 1.0f / (light.constant() + light.linear() * d + light.quadratic() * d * d);
+}
+
+float spotCone(const PackedLight& light, const glm::vec3& toLight) {
+    const float cutOff = std::cos(glm::radians(light.cutoff()));
+    const float outerCutOff = std::cos(glm::radians(light.outerCutoff()));
+    const float theta = glm::dot(toLight, glm::normalize(-light.forward()));
+    return std::clamp((theta - outerCutOff) / (cutOff - outerCutOff), 0.0f, 1.0f);
+}
+
+bool insideAmbientVolume(const PackedLight& light, const glm::vec3& p) {
+    if (light.type() == LightType::AmbientBox) {
+        const glm::vec3 d = glm::abs(p - light.position());
+        const glm::vec3 half = light.halfSize();
+        return d.x < half.x && d.y < half.y && d.z < half.z;
+    }
+    if (light.type() == LightType::AmbientSphere)
+        return glm::distance(p, light.position()) < light.radius();
+    return false;
+}
+
+glm::vec3 shadeLightTypes(const SurfacePoint& s, const glm::vec3& cameraPosition,
+                          std::span<const PackedLight> lights) {
+    const glm::vec3 V = glm::normalize(cameraPosition - s.position);
+    glm::vec3 Lo(0.0f), ambient(0.0f);
+    for (const PackedLight& light : lights) {
+        const glm::vec3 color = light.color() * light.intensity();
+        switch (light.type()) {
+            case LightType::AmbientBox:
+            case LightType::AmbientSphere:
+                if (insideAmbientVolume(light, s.position)) ambient += color;
+                break;
+            case LightType::Directional:
+                Lo += directLight(s.normal, V, glm::normalize(-light.forward()), color, s.albedo,
+                                  s.metallic, s.roughness);
+                break;
+            case LightType::Point:
+            case LightType::Spot: {
+                const glm::vec3 toLight = light.position() - s.position;
+                const glm::vec3 L = glm::normalize(toLight);
+                float coefficient = lightAttenuation(light, glm::length(toLight));
+                if (light.type() == LightType::Spot) coefficient *= spotCone(light, L);
+                Lo += directLight(s.normal, V, L, color * coefficient, s.albedo, s.metallic,
+                                  s.roughness);
+                break;
+            }
+        }
+    }
+    return ambient * s.albedo * s.ao + Lo;
 }
 
 float D_GGX(float NdotH, float alpha) {

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "light_block.h"
 #include "punctual_light.h"
 
 namespace pbr::cpu {
@@ -32,6 +33,23 @@ struct SurfacePoint {
 // plus the tutorial's constant ambient 0.03 * albedo * ao. Linear, before tone mapping.
 glm::vec3 shadePointLights(const SurfacePoint& surface, const glm::vec3& cameraPosition,
                            std::span<const PointLight> lights);
+
+// One light's share: (kD albedo / pi + specular) radiance NdotL, the text's integrand for one
+// direction (directLight of brdf.glsl).
+glm::vec3 directLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                      const glm::vec3& radiance, const glm::vec3& albedo, float metallic,
+                      float roughness);
+
+// Sample 09: the Overload engine's five light types (light_types.glsl) at `surface`: the direct
+// lights through directLight, plus ambient x albedo x ao from every ambient volume holding the
+// point (no constant ambient). Linear, before tone mapping.
+glm::vec3 shadeLightTypes(const SurfacePoint& surface, const glm::vec3& cameraPosition,
+                          std::span<const PackedLight> lights);
+// The parts, for tests: 1 / (c + l d + q d^2); the spot's cone factor for the unit direction
+// from the point towards the light; whether a point lies in an ambient volume.
+float lightAttenuation(const PackedLight& light, float distance);
+float spotCone(const PackedLight& light, const glm::vec3& toLight);
+bool insideAmbientVolume(const PackedLight& light, const glm::vec3& point);
 
 // Reference values of the BRDF LUT by deterministic numerical quadrature, not sampling: the
 // integrand is summed over half vectors h with Gauss-Legendre rules on panels of theta_h graded

@@ -81,6 +81,22 @@ std::vector<double> parseNumberList(const std::string& flag, const std::string& 
     return numbers;
 }
 
+}  // namespace
+
+std::vector<double> parseNumbersFlag(const FlagSpec& spec, const std::string& value) {
+    std::vector<double> numbers;
+    std::stringstream stream(value);
+    std::string part;
+    while (std::getline(stream, part, ',')) numbers.push_back(parseNumberFlag(spec.name, part, spec.min, spec.max));
+    if (int(numbers.size()) != spec.count || (!value.empty() && value.back() == ',')) {
+        fail(spec.name + ": " + inQuotes(value) + " is not " + spec.valueName + " (" +
+             std::to_string(spec.count) + " numbers, comma-separated)");
+    }
+    return numbers;
+}
+
+namespace {
+
 void checkSampleFlag(const FlagSpec& spec, const std::string& value) {
     switch (spec.kind) {
         case FlagSpec::Kind::Switch:
@@ -94,6 +110,9 @@ void checkSampleFlag(const FlagSpec& spec, const std::string& value) {
             break;
         case FlagSpec::Kind::Number:
             parseNumberFlag(spec.name, value, spec.min, spec.max);
+            break;
+        case FlagSpec::Kind::Numbers:
+            parseNumbersFlag(spec, value);
             break;
         case FlagSpec::Kind::Choice:
             if (std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
@@ -122,16 +141,16 @@ void parseSize(const std::string& value, Options& options) {
 }  // namespace
 
 FlagSpec FlagSpec::toggle(std::string name, std::string help) {
-    return {std::move(name), "", std::move(help), Kind::Switch, 0.0, 0.0, {}};
+    return {std::move(name), "", std::move(help), Kind::Switch, 0.0, 0.0, 0, {}};
 }
 
 FlagSpec FlagSpec::text(std::string name, std::string valueName, std::string help) {
-    return {std::move(name), std::move(valueName), std::move(help), Kind::Text, 0.0, 0.0, {}};
+    return {std::move(name), std::move(valueName), std::move(help), Kind::Text, 0.0, 0.0, 0, {}};
 }
 
 FlagSpec FlagSpec::outputFolder(std::string name, std::string valueName, std::string help) {
     return {
-        std::move(name), std::move(valueName), std::move(help), Kind::OutputFolder, 0.0, 0.0, {}};
+        std::move(name), std::move(valueName), std::move(help), Kind::OutputFolder, 0.0, 0.0, 0, {}};
 }
 
 FlagSpec FlagSpec::integer(std::string name, std::string valueName, std::string help, int min,
@@ -142,18 +161,26 @@ FlagSpec FlagSpec::integer(std::string name, std::string valueName, std::string 
             Kind::Integer,
             double(min),
             double(max),
+            0,
             {}};
 }
 
 FlagSpec FlagSpec::number(std::string name, std::string valueName, std::string help, double min,
                           double max) {
-    return {std::move(name), std::move(valueName), std::move(help), Kind::Number, min, max, {}};
+    return {std::move(name), std::move(valueName), std::move(help), Kind::Number, min, max, 0, {}};
+}
+
+FlagSpec FlagSpec::numbers(std::string name, std::string valueName, std::string help, int count,
+                           double min, double max) {
+    FlagSpec spec{std::move(name), std::move(valueName), std::move(help), Kind::Numbers, min, max, 0, {}};
+    spec.count = count;
+    return spec;
 }
 
 FlagSpec FlagSpec::choice(std::string name, std::vector<std::string> choices, std::string help) {
     std::string valueName;
     for (const std::string& choice : choices) valueName += (valueName.empty() ? "" : "|") + choice;
-    return {std::move(name),   std::move(valueName), std::move(help), Kind::Choice, 0.0, 0.0,
+    return {std::move(name), std::move(valueName), std::move(help), Kind::Choice, 0.0, 0.0, 0,
             std::move(choices)};
 }
 

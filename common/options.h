@@ -14,12 +14,13 @@ namespace pbr {
 // A flag a sample adds, made with one of the functions below: "--lights N" (a whole number in a
 // range), "--filter trilinear|nearest" (one of some words), "--model FILE" (any text), a switch.
 struct FlagSpec {
-    enum class Kind { Switch, Text, OutputFolder, Integer, Number, Choice };
+    enum class Kind { Switch, Text, OutputFolder, Integer, Number, Numbers, Choice };
     std::string name;       // "--lights"
     std::string valueName;  // "N", "FILE", "a|b"; empty for a switch
     std::string help;
     Kind kind = Kind::Text;
-    double min = 0.0, max = 0.0;       // Integer, Number: the allowed range, both ends included
+    double min = 0.0, max = 0.0;       // Integer, Number(s): the allowed range, both ends included
+    int count = 0;                     // Numbers: how many, comma-separated
     std::vector<std::string> choices;  // Choice: the allowed words; the first is the default
 
     static FlagSpec toggle(std::string name, std::string help);
@@ -30,6 +31,9 @@ struct FlagSpec {
                             int max);
     static FlagSpec number(std::string name, std::string valueName, std::string help, double min,
                            double max);
+    // "--attenuation 1,0.7,1.8": exactly `count` numbers, each in [min, max].
+    static FlagSpec numbers(std::string name, std::string valueName, std::string help, int count,
+                            double min, double max);
     static FlagSpec choice(std::string name, std::vector<std::string> choices, std::string help);
 };
 
@@ -75,5 +79,7 @@ std::string usageText(const std::string& program, std::span<const FlagSpec> samp
 // Helpers for flag values, throwing UsageError naming the flag when the value is bad.
 int parseIntFlag(const std::string& flag, const std::string& value, int min, int max);
 double parseNumberFlag(const std::string& flag, const std::string& value, double min, double max);
+// The numbers of a FlagSpec::numbers flag (throws UsageError naming the flag).
+std::vector<double> parseNumbersFlag(const FlagSpec& spec, const std::string& value);
 
 }  // namespace pbr

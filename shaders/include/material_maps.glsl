@@ -19,17 +19,23 @@ struct Material
     vec3 N;  // the world-space normal, from the normal map
 };
 
-Material readMaterialMaps()
+// The maps at `uv` (09 tiles and offsets the texture coordinates first).
+Material readMaterialMapsAt(vec2 uv)
 {
     Material m;
-    m.albedo = texture(albedoMap, TexCoords).rgb;  // already linear: no pow(2.2) needed
-    m.metallic = texture(metallicMap, TexCoords).r;
-    m.roughness = texture(roughnessMap, TexCoords).r;
-    m.ao = texture(aoMap, TexCoords).r;
-    vec3 tangentNormal = texture(normalMap, TexCoords).xyz * 2.0 - 1.0;
+    m.albedo = texture(albedoMap, uv).rgb;  // already linear: no pow(2.2) needed
+    m.metallic = texture(metallicMap, uv).r;
+    m.roughness = texture(roughnessMap, uv).r;
+    m.ao = texture(aoMap, uv).r;
+    vec3 tangentNormal = texture(normalMap, uv).xyz * 2.0 - 1.0;
     if (useDerivativeTangents)
-        m.N = normalFromMapWithDerivatives(tangentNormal, Normal, WorldPos, TexCoords);
+        m.N = normalFromMapWithDerivatives(tangentNormal, Normal, WorldPos, uv);
     else
         m.N = normalFromMapWithTangent(tangentNormal, Normal, Tangent);
     return m;
+}
+
+Material readMaterialMaps()
+{
+    return readMaterialMapsAt(TexCoords);
 }

@@ -72,6 +72,15 @@ TEST(Cli, BadFlagValuesNameTheFlagBeforeAnyContext) {
          "--filter: 'foo' is not trilinear or nearest"},
         {{"05_ibl_specular", "--textured=yes"}, "--textured: takes no value"},
         {{"06_brdf_lut", "--hdr"}, "--hdr: missing value"},
+        {{"09_light_types", "--only", "sun"},
+         "--only: 'sun' is not all or point or directional or spot or ambient-box or "
+         "ambient-sphere"},
+        {{"09_light_types", "--point-lights", "251"},
+         "--point-lights: 251 is out of range [0, 250]"},
+        {{"09_light_types", "--attenuation", "1,2"},
+         "--attenuation: '1,2' is not C,L,Q (3 numbers, comma-separated)"},
+        {{"09_light_types", "--attenuation", "1,-1,0"},
+         "--attenuation: -1 is out of range [0, 1e+06]"},
     };
     for (const auto& [argv, message] : cases) {
         const RunResult run = runSample(argv, {.unsetEnv = {"DISPLAY", "WAYLAND_DISPLAY"}});

@@ -15,6 +15,7 @@
 #include "error.h"
 #include "framebuffer.h"
 #include "ibl.h"
+#include "light_buffer.h"
 #include "mesh.h"
 #include "model.h"
 #include "output.h"
@@ -710,6 +711,52 @@ TEST(Gl, AnOrbitSampleFramesItsModelOrStartsAtCameraXyz) {
 // to 1000, the Khronos Neutral toe (< 0.08) and knee (0.76), saturated and negative colours.
 // Within 1e-4, a fortieth of an 8-bit level (measured: 2e-7 on llvmpipe): 1/255 would let a
 // changed constant in the toe (6.25 -> 6, at most 0.4/255) through.
+// Sample 09's light block: every offset pbr::LightBlock / pbr::PackedLight puts a field at is
+// the offset GL gives that member of the std140 block in light_types.glsl (first, second and
+// last light), and the block's size is the struct's.
+TEST(Gl, LightBlockOffsetsAreWhatGlReports) {
+    const fs::path dir = test::testOutputDir("gl_light_block");
+    App app = makeApp(dir);
+    const fs::path fragment = dir / "lights.frag";
+    writeFileAtomically(fragment, R"(#version 330 core
+out vec4 FragColor;
+#include "brdf.glsl"
+#include "light_types.glsl"
+void main() { FragColor = vec4(shadeLights(vec3(0.0), vec3(0, 1, 0), vec3(0, 0, 1), vec3(1.0), 0.0, 0.5, 1.0), 1.0); }
+)");
+    Shader shader(shaderDir() / "ibl/fullscreen.vert", fragment);
+    LightBuffer::attach(shader.id());
+    const GLuint block = glGetUniformBlockIndex(shader.id(), "LightBlock");
+    ASSERT_NE(block, GL_INVALID_INDEX);
+    GLint size = 0;
+    glGetActiveUniformBlockiv(shader.id(), block, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
+    EXPECT_EQ(size_t(size), sizeof(LightBlock));
+
+    std::vector<std::pair<std::string, size_t>> members = {{"lightCount", offsetof(LightBlock, lightCount)}};
+    for (const int i : {0, 1, LightBlock::kMaxLights - 1}) {
+        const std::string at = "lights[" + std::to_string(i) + "].";
+        const size_t base = offsetof(LightBlock, lights) + size_t(i) * sizeof(PackedLight);
+        members.push_back({at + "positionConstant", base + offsetof(PackedLight, positionConstant)});
+        members.push_back({at + "forwardLinear", base + offsetof(PackedLight, forwardLinear)});
+        members.push_back({at + "colorQuadratic", base + offsetof(PackedLight, colorQuadratic)});
+        members.push_back({at + "typeCutoffOuterIntensity",
+                           base + offsetof(PackedLight, typeCutoffOuterIntensity)});
+    }
+    for (const auto& [name, expected] : members) {
+        const char* names[] = {name.c_str()};
+        GLuint index = GL_INVALID_INDEX;
+        glGetUniformIndices(shader.id(), 1, names, &index);
+        ASSERT_NE(index, GL_INVALID_INDEX) << name;
+        GLint offset = -1;
+        glGetActiveUniformsiv(shader.id(), 1, &index, GL_UNIFORM_OFFSET, &offset);
+        EXPECT_EQ(size_t(offset), expected) << name;
+    }
+    // one light too many is a clear error, not a write past the block
+    LightBuffer buffer;
+    const std::vector<PackedLight> tooMany(size_t(LightBlock::kMaxLights) + 1);
+    EXPECT_THROW(buffer.upload(tooMany), Error);
+}
+
 TEST(Gl, ToneMappersMatchTheCpu) {
     const fs::path dir = test::testOutputDir("gl_tonemap");
     App app = makeApp(dir);

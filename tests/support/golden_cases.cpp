@@ -57,6 +57,13 @@ std::vector<GoldenCase> goldenCases() {
          {},
          true},
     };
+    // 09: the whole scene, and each kind of light alone.
+    cases.push_back({"09_light_types", "09_light_types", {}, 0.1});
+    for (const char* only : {"point", "directional", "spot", "ambient-box", "ambient-sphere"}) {
+        std::string name = std::string("09_only_") + only;
+        std::replace(name.begin(), name.end(), '-', '_');
+        cases.push_back({name, "09_light_types", {"--only", only, "--size", "480x270"}, 0.02});
+    }
     // The four tone mappers on the showcase, side by side in 07's README.
     for (const char* mapper : {"khronos-neutral", "aces", "reinhard", "none"}) {
         std::string name = std::string("07_tonemap_") + mapper;

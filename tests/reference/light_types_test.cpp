@@ -1,0 +1,189 @@
+// Sample 09 against the CPU: each light type alone (--only), on the plain material
+// (--untextured: floor albedo 0.8 grey, metallic 0, roughness 0.9, ao 1, normal +Y), every floor
+// pixel the spheres do not hide, shaded by pbr::cpu::shadeLightTypes (common/brdf.cpp, written
+// apart from light_types.glsl) and the engine's Reinhard + gamma. Pixels are counted on both
+// sides of every edge: inside, in the band of and outside the spot's cone; inside and outside
+// each ambient volume (pixels whose neighbours fall on the other side are left out: the edge
+// itself is a step). The point light's three attenuation terms are checked each alone.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "support/golden.h"
+#include "support/mesh_hit.h"
+#include "support/process.h"
+
+#include "../../samples/09_light_types/scene.h"
+#include "brdf.h"
+#include "camera.h"
+#include "image.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kWidth = 320, kHeight = 180;
+const glm::vec3 kEye(0.0f, 5.5f, 12.0f);
+constexpr float kYaw = -90.0f, kPitch = -22.0f;
+
+struct FloorPixel {
+    int x, y;
+    glm::vec3 point;
+};
+
+// The floor point each pixel centre sees, unless a sphere is in the way (or nearly: rays that
+// pass within 2 cm of one are left out, for the silhouettes' antialiasing-free steps).
+std::optional<glm::vec3> floorPoint(const glm::dmat4& toWorld, double px, double py) {
+    const auto [origin, direction] = pixelRay(toWorld, kWidth, kHeight, int(px), int(py));
+    if (direction.y >= 0.0) return std::nullopt;
+    const double t = -origin.y / direction.y;
+    const glm::dvec3 hit = origin + t * direction;
+    if (std::abs(hit.x) > light_types::kFloorHalfX - 0.05 ||
+        std::abs(hit.z) > light_types::kFloorHalfZ - 0.05)
+        return std::nullopt;
+    for (int i = 0; i < 5; ++i) {
+        const glm::dvec3 c(light_types::sphereCentre(i));
+        const double along = glm::dot(c - origin, direction);
+        const double miss = glm::length(c - origin - along * direction);
+        if (along > 0.0 && along < t && miss < light_types::kSphereRadius + 0.02) return std::nullopt;
+    }
+    return glm::vec3(hit);
+}
+
+struct TypeCheck {
+    int compared = 0, worst = 0;
+    std::vector<int> byClass;  // pixels compared in each class of the edge test
+};
+
+// Renders `only` (with `extra` flags) and compares every usable floor pixel. `classify` sorts a
+// floor point into classes (-1: none); pixels whose 4-neighbours land in another class are left
+// out when `stepEdges` (a discontinuous edge).
+TypeCheck checkType(const std::string& only, const std::vector<std::string>& extra,
+                    pbr::Attenuation attenuation, int classes,
+                    const std::function<int(const glm::vec3&)>& classify, bool stepEdges) {
+    const fs::path dir = testOutputDir("reference_09_" + only);
+    std::vector<std::string> args = {"--only",   only,     "--untextured", "--msaa", "0",
+                                     "--size",   std::to_string(kWidth) + "x" + std::to_string(kHeight),
+                                     "--camera", "0,5.5,12,-90,-22"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const SampleRender render =
+        renderSample("09_light_types", dir / (only + std::to_string(extra.size()) + ".png"), args);
+    EXPECT_EQ(render.run.exitCode, 0) << render.run.err;
+    const Image image = readImage(render.image, 3);
+
+    std::vector<PackedLight> lights;
+    for (const PackedLight& light : light_types::sceneLights(attenuation)) {
+        static const char* names[] = {"point", "directional", "spot", "ambient-box",
+                                      "ambient-sphere"};
+        if (names[int(light.type())] == only) lights.push_back(light);
+    }
+    EXPECT_EQ(lights.size(), 1u);
+
+    const FlyCamera camera(kEye, kYaw, kPitch);
+    const glm::dmat4 toWorld = glm::inverse(
+        glm::dmat4(camera.projectionMatrix(float(kWidth) / float(kHeight)) * camera.viewMatrix()));
+    TypeCheck check;
+    check.byClass.assign(size_t(classes), 0);
+    for (int py = 0; py < kHeight; ++py) {
+        for (int px = 0; px < kWidth; ++px) {
+            const auto point = floorPoint(toWorld, px, py);
+            if (!point) continue;
+            const int cls = classify ? classify(*point) : 0;
+            if (cls < 0) continue;
+            if (stepEdges) {
+                bool edge = false;
+                for (const auto& [dx, dy] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}}) {
+                    const auto n = floorPoint(toWorld, px + dx, py + dy);
+                    if (!n || classify(*n) != cls) edge = true;
+                }
+                if (edge) continue;
+            }
+            const cpu::SurfacePoint surface{*point, {0.0f, 1.0f, 0.0f}, glm::vec3(0.8f), 0.0f,
+                                            0.9f, 1.0f};
+            const glm::vec3 expected =
+                cpu::reinhardGamma(cpu::shadeLightTypes(surface, kEye, lights)) * 255.0f;
+            for (int c = 0; c < 3; ++c) {
+                const int want = int(std::lround(std::clamp(expected[c], 0.0f, 255.0f)));
+                const int diff = std::abs(int(image.at(px, py, c)) - want);
+                check.worst = std::max(check.worst, diff);
+                EXPECT_LE(diff, 2) << only << " pixel (" << px << ", " << py << ") channel " << c
+                                   << ": rendered " << int(image.at(px, py, c)) << ", CPU "
+                                   << want;
+            }
+            ++check.compared;
+            ++check.byClass[size_t(cls)];
+        }
+    }
+    return check;
+}
+
+void report(const std::string& what, const TypeCheck& check) {
+    std::printf("%s: %d floor pixels, worst %d/255; by class:", what.c_str(), check.compared,
+                check.worst);
+    for (int n : check.byClass) std::printf(" %d", n);
+    std::printf("\n");
+}
+
+TEST(Reference, LightTypes09PointAndDirectional) {
+    for (const char* only : {"point", "directional"}) {
+        const TypeCheck check =
+            checkType(only, {}, light_types::kPointAttenuation, 1, nullptr, false);
+        report(only, check);
+        EXPECT_GT(check.compared, 5000) << only;
+    }
+}
+
+// The cone: inside the cut-off, in the soft band, outside the outer angle.
+TEST(Reference, LightTypes09SpotCone) {
+    const PackedLight spot = light_types::sceneLights(light_types::kPointAttenuation)[2];
+    ASSERT_EQ(spot.type(), LightType::Spot);
+    const float inner = std::cos(glm::radians(spot.cutoff()));
+    const float outer = std::cos(glm::radians(spot.outerCutoff()));
+    const TypeCheck check = checkType(
+        "spot", {}, light_types::kPointAttenuation, 3,
+        [&](const glm::vec3& p) {
+            const float theta = glm::dot(glm::normalize(spot.position() - p), -spot.forward());
+            return theta > inner + 1e-3f ? 0 : theta > outer + 1e-3f ? 1 : theta < outer - 1e-3f ? 2 : -1;
+        },
+        false);
+    report("spot (inside, band, outside)", check);
+    for (int cls = 0; cls < 3; ++cls) EXPECT_GT(check.byClass[size_t(cls)], 300) << cls;
+}
+
+// The ambient volumes: a step at the box's faces and the sphere's surface.
+TEST(Reference, LightTypes09AmbientVolumes) {
+    const auto lights = light_types::sceneLights(light_types::kPointAttenuation);
+    for (const int index : {3, 4}) {
+        const PackedLight volume = lights[size_t(index)];
+        const std::string only = index == 3 ? "ambient-box" : "ambient-sphere";
+        const TypeCheck check = checkType(
+            only, {}, light_types::kPointAttenuation, 2,
+            [&](const glm::vec3& p) { return cpu::insideAmbientVolume(volume, p) ? 0 : 1; }, true);
+        report(only + " (inside, outside)", check);
+        EXPECT_GT(check.byClass[0], 300) << only;
+        EXPECT_GT(check.byClass[1], 300) << only;
+    }
+}
+
+// 1 / (c + l d + q d^2) with each term alone: constant (no falloff), linear (1/d), quadratic
+// (1/d^2), through --attenuation.
+TEST(Reference, LightTypes09AttenuationTermsEachAlone) {
+    for (const auto& [flag, terms] :
+         {std::pair{"1,0,0", Attenuation{1, 0, 0}}, {"0,1,0", Attenuation{0, 1, 0}},
+          {"0,0,1", Attenuation{0, 0, 1}}}) {
+        const TypeCheck check =
+            checkType("point", {"--attenuation", flag}, terms, 1, nullptr, false);
+        report(std::string("point, attenuation ") + flag, check);
+        EXPECT_GT(check.compared, 5000) << flag;
+    }
+}
+
+}  // namespace
+}  // namespace pbr::test
