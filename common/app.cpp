@@ -183,6 +183,16 @@ float App::flagNumber(const std::string& name, float fallback) const {
     return value ? float(parseNumberFlag(name, *value, spec.min, spec.max)) : fallback;
 }
 
+std::optional<std::vector<float>> App::flagNumbers(const std::string& name) const {
+    const FlagSpec& spec = sampleFlag(name);
+    if (spec.kind != FlagSpec::Kind::Numbers) throw Error(name + " is not a list of numbers");
+    const auto value = flag(name);
+    if (!value) return std::nullopt;
+    std::vector<float> numbers;
+    for (const double n : parseNumbersFlag(spec, *value)) numbers.push_back(float(n));
+    return numbers;
+}
+
 void App::addOutputFile(fs::path path, std::string bytes) {
     outputFiles_.emplace_back(std::move(path), std::move(bytes));
 }

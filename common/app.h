@@ -66,6 +66,8 @@ public:
     std::string flagChoice(const std::string& name) const;
     int flagInt(const std::string& name, int fallback) const;
     float flagNumber(const std::string& name, float fallback) const;
+    // A Numbers flag's values (its FlagSpec's count of them), when given.
+    std::optional<std::vector<float>> flagNumbers(const std::string& name) const;
 
     // A file to write together with the picture at the end of the run: the picture (when one is
     // written) and every such file appear together, or none does (see output.h).

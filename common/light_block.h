@@ -24,6 +24,9 @@
 namespace pbr {
 
 enum class LightType { Point = 0, Directional = 1, Spot = 2, AmbientBox = 3, AmbientSphere = 4 };
+// The types' names, in LightType's order, as sample 09's --only takes them.
+inline constexpr const char* kLightTypeNames[5] = {"point", "directional", "spot", "ambient-box",
+                                                   "ambient-sphere"};
 
 struct PackedLight {
     glm::vec4 positionConstant{0.0f};

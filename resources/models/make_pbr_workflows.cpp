@@ -29,10 +29,8 @@
 //              the same diffuse colour as a dielectric (F0 0.04, white).
 // One directional light (KHR_lights_punctual, 2 lux) from the upper left: it lights every
 // sphere the same way wherever it stands, so the two halves differ only by where they are.
-#include <cstdio>
 #include <filesystem>
 #include <functional>
-#include <set>
 #include <string>
 #include <vector>
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -57,9 +58,6 @@ std::vector<Object> scene() {
     return objects;
 }
 
-const std::vector<std::string> kTypeNames = {"point", "directional", "spot", "ambient-box",
-                                             "ambient-sphere"};
-
 // N moving point lights for the stress test: on a circle over the scene, turning with `time`,
 // colours round the hue wheel; the same short range as the scene's point light (terms 1, 0.7,
 // 1.8), so each makes its own small pool of light.
@@ -81,13 +79,9 @@ std::vector<pbr::PackedLight> movingLights(int count, float time) {
 }  // namespace
 
 int main(int argc, char** argv) try {
-    const pbr::FlagSpec attenuationFlag = pbr::FlagSpec::numbers(
-        "--attenuation", "C,L,Q",
-        "the point light's constant, linear and quadratic terms, each >= 0, not all 0 (default "
-        "1,0.7,1.8)",
-        3, 0.0, 1e6);
-    std::vector<std::string> onlyChoices = kTypeNames;
-    onlyChoices.insert(onlyChoices.begin(), "all");
+    std::vector<std::string> onlyChoices = {"all"};
+    onlyChoices.insert(onlyChoices.end(), std::begin(pbr::kLightTypeNames),
+                       std::end(pbr::kLightTypeNames));
     pbr::App app(
         argc, argv,
         {.name = "09_light_types",
@@ -101,19 +95,24 @@ int main(int argc, char** argv) try {
                                    "add N moving point lights (their places depend only on "
                                    "--time), for the cost of many lights",
                                    0, pbr::LightBlock::kMaxLights - 5),
-             attenuationFlag,
+             pbr::FlagSpec::numbers("--attenuation", "C,L,Q",
+                                    "the point light's constant, linear and quadratic terms, "
+                                    "each >= 0, not all 0 (default 1,0.7,1.8)",
+                                    3, 0.0, 1e6),
              pbr::FlagSpec::toggle("--untextured",
                                    "a plain material instead of the maps: the tint as albedo, "
                                    "metallic 0, roughness = the roughness factor (the tests' "
                                    "surface)")}});
     const std::string only = app.flagChoice("--only");
-    const int extraLights = int(app.flagNumber("--point-lights", 0.0f));
+    const int extraLights = app.flagInt("--point-lights", 0);
     pbr::Attenuation attenuation = light_types::kPointAttenuation;
-    if (const auto terms = app.flag("--attenuation")) {
-        const std::vector<double> n = pbr::parseNumbersFlag(attenuationFlag, *terms);
-        if (n[0] + n[1] + n[2] <= 0.0)
-            throw pbr::UsageError("--attenuation: '" + *terms + "': all three terms are 0", "");
-        attenuation = {float(n[0]), float(n[1]), float(n[2])};
+    if (const auto n = app.flagNumbers("--attenuation")) {
+        if ((*n)[0] + (*n)[1] + (*n)[2] <= 0.0f) {
+            throw pbr::UsageError("--attenuation: '" + *app.flag("--attenuation") +
+                                      "': all three terms are 0",
+                                  "");
+        }
+        attenuation = {(*n)[0], (*n)[1], (*n)[2]};
     }
     const bool untextured = app.options().has("--untextured");
 
@@ -128,33 +127,40 @@ int main(int argc, char** argv) try {
     shader.set("untextured", untextured ? 1 : 0);
 
     const std::vector<Object> objects = scene();
+    // Each material set loaded once; setOf[i] is object i's.
     std::vector<std::string> setNames;
     std::vector<pbr::PbrTextures> sets;
-    if (!untextured) {
-        for (const Object& object : objects) {
-            if (std::find(setNames.begin(), setNames.end(), object.materialSet) != setNames.end())
-                continue;
+    std::vector<size_t> setOf;
+    for (const Object& object : objects) {
+        auto known = std::find(setNames.begin(), setNames.end(), object.materialSet);
+        if (known == setNames.end()) {
             setNames.push_back(object.materialSet);
-            sets.push_back(pbr::loadPbrTextures(pbr::materialDir() / object.materialSet));
+            if (!untextured)
+                sets.push_back(pbr::loadPbrTextures(pbr::materialDir() / object.materialSet));
+            known = setNames.end() - 1;
         }
+        setOf.push_back(size_t(known - setNames.begin()));
     }
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 32));
     const pbr::GpuMesh floorMesh(pbr::quad());
 
     std::vector<pbr::PackedLight> fixedLights;
     for (const pbr::PackedLight& light : light_types::sceneLights(attenuation)) {
-        if (only == "all" || kTypeNames[size_t(light.type())] == only) fixedLights.push_back(light);
+        if (only == "all" || pbr::kLightTypeNames[int(light.type())] == only)
+            fixedLights.push_back(light);
     }
+    // The scene's own lights go up once; only the moving ones change from frame to frame.
     pbr::LightBuffer lightBuffer;
+    lightBuffer.upload(fixedLights);
 
     glEnable(GL_DEPTH_TEST);
     while (app.nextFrame()) {
-        std::vector<pbr::PackedLight> lights = fixedLights;
         if (extraLights > 0) {
+            std::vector<pbr::PackedLight> lights = fixedLights;
             const std::vector<pbr::PackedLight> moving = movingLights(extraLights, app.time());
             lights.insert(lights.end(), moving.begin(), moving.end());
+            lightBuffer.upload(lights);
         }
-        lightBuffer.upload(lights);
 
         glClearColor(0.02f, 0.02f, 0.03f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -162,13 +168,9 @@ int main(int argc, char** argv) try {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
-        for (const Object& object : objects) {
-            if (!untextured) {
-                const size_t set = size_t(std::find(setNames.begin(), setNames.end(),
-                                                    object.materialSet) -
-                                          setNames.begin());
-                sets[set].bind();
-            }
+        for (size_t i = 0; i < objects.size(); ++i) {
+            const Object& object = objects[i];
+            if (!untextured) sets[setOf[i]].bind();
             shader.set("textureTiling", object.tiling);
             shader.set("textureOffset", object.offset);
             shader.set("albedoTint", untextured && object.floor ? glm::vec4(0.8f, 0.8f, 0.8f, 1.0f)

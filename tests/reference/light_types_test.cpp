@@ -80,9 +80,7 @@ TypeCheck checkType(const std::string& only, const std::vector<std::string>& ext
 
     std::vector<PackedLight> lights;
     for (const PackedLight& light : light_types::sceneLights(attenuation)) {
-        static const char* names[] = {"point", "directional", "spot", "ambient-box",
-                                      "ambient-sphere"};
-        if (names[int(light.type())] == only) lights.push_back(light);
+        if (kLightTypeNames[int(light.type())] == only) lights.push_back(light);
     }
     EXPECT_EQ(lights.size(), 1u);
 
