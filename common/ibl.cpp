@@ -137,13 +137,17 @@ void Skybox::draw(const TextureCube& environment, const glm::mat4& view,
                   const glm::mat4& projection) {
     GLint depthFunc = GL_LESS;
     glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
+    GLint cullFace = GL_BACK;
+    glGetIntegerv(GL_CULL_FACE_MODE, &cullFace);
     glDepthFunc(GL_LEQUAL);  // the sky sits at depth 1, where the cleared depth is
+    glCullFace(GL_FRONT);    // seen from inside, the cube shows the backs of its faces
     shader_.use();
     shader_.set("view", view);
     shader_.set("projection", projection);
     environment.bind(0);
     cube_.draw();
-    glDepthFunc(GLenum(depthFunc));  // the caller's, whatever it was
+    glDepthFunc(GLenum(depthFunc));  // the caller's, whatever they were
+    glCullFace(GLenum(cullFace));
 }
 
 }  // namespace pbr

@@ -45,8 +45,13 @@ MeshData uvSphere(int xSegments, int ySegments) {
     MeshData mesh = sphereVertices(xSegments, ySegments);
     mesh.primitive = Primitive::TriangleStrip;
     const std::uint32_t rowLength = std::uint32_t(xSegments) + 1;
-    mesh.indices.reserve(size_t(2) * rowLength * size_t(ySegments));
-    // Even rows run left to right, odd rows right to left, so one strip covers the sphere.
+    mesh.indices.reserve(1 + size_t(2) * rowLength * size_t(ySegments));
+    // Even rows run left to right, odd rows right to left, so one strip covers the sphere, and
+    // each quad is split along the same diagonal as in the text's strip. The text's strip is
+    // clockwise seen from outside; this one opens with its first vertex twice (one empty
+    // triangle), which shifts GL's alternation by one, so every triangle after it is
+    // counter-clockwise (GL's default front face) and the samples may cull back faces.
+    mesh.indices.push_back(0);
     for (int y = 0; y < ySegments; ++y) {
         const std::uint32_t top = std::uint32_t(y) * rowLength;
         const std::uint32_t bottom = top + rowLength;

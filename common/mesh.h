@@ -29,8 +29,10 @@ struct MeshData {
 
 // The tutorial's UV sphere: unit radius, (xSegments+1) x (ySegments+1) vertices, uv = (x/X, y/Y),
 // normal = position, y = cos(v * pi) (v = 0 at the north pole), one indexed triangle strip that
-// snakes row by row (2 * (X+1) * Y indices: 8,320 for 64 x 64). Its winding alternates, as the
-// text's does: draw it without face culling.
+// snakes row by row: the text's 2 * (X+1) * Y indices (8,320 for 64 x 64) after one more, the
+// first vertex repeated, which makes every triangle counter-clockwise seen from outside (the
+// text's are clockwise, drawn without culling) while the quads keep the text's diagonals, so the
+// pictures stay the same and back faces can be culled.
 MeshData uvSphere(int xSegments = 64, int ySegments = 64);
 // The same sphere as an indexed triangle list (6 * X * Y indices), counter-clockwise seen from
 // outside; the degenerate triangles at the poles are kept so the count stays regular.

@@ -38,6 +38,7 @@ int main(int argc, char** argv) try {
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f};
 
     glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
         glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -73,6 +73,7 @@ int main(int argc, char** argv) try {
     const pbr::SphereGrid row{.nrRows = 1, .nrColumns = 5, .spacing = 2.5f, .z = -2.0f};
 
     glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
         glClearColor(0.2f, 0.3f, 0.3f, 1.0f);  // hidden by the skybox wherever it is drawn
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -154,6 +154,7 @@ int main(int argc, char** argv) try {
     lightBuffer.upload(fixedLights);
 
     glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
         if (extraLights > 0) {
             std::vector<pbr::PackedLight> lights = fixedLights;

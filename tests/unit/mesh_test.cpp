@@ -1,9 +1,17 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 #include <numbers>
 
 #include "mesh.h"
+#include "model.h"
+#include "paths.h"
 
 namespace pbr {
 namespace {
@@ -15,7 +23,7 @@ TEST(Sphere, CountsAreTheTutorials) {
     EXPECT_EQ(sphere.normals.size(), sphere.positions.size());
     EXPECT_EQ(sphere.uvs.size(), sphere.positions.size());
     EXPECT_EQ(sphere.tangents.size(), sphere.positions.size());
-    EXPECT_EQ(sphere.indices.size(), 8320u);  // 64 rows of 2 * 65
+    EXPECT_EQ(sphere.indices.size(), 8321u);  // the first vertex, then 64 rows of 2 * 65
 }
 
 TEST(Sphere, VerticesAreOnTheUnitSphereWithOutwardUnitNormals) {
@@ -68,12 +76,101 @@ TEST(Sphere, TangentsAreUnitOrthogonalAndFollowTheUvs) {
 TEST(Sphere, IndicesAreInRangeAndTheStripSnakesRowByRow) {
     const MeshData sphere = uvSphere(64, 64);
     for (std::uint32_t index : sphere.indices) EXPECT_LT(index, sphere.positions.size());
-    // Row 0 runs left to right: 0, 65, 1, 66, ...; row 1 right to left: 64 + 130, 64 + 65, ...
+    // Vertex 0 twice (GL's alternation shifted by one: counter-clockwise triangles), then row 0
+    // left to right: 0, 65, 1, 66, ...; row 1 right to left: 64 + 130, 64 + 65, ...: the text's
+    // strip, so the quads keep the text's diagonals.
     EXPECT_EQ(sphere.indices[0], 0u);
-    EXPECT_EQ(sphere.indices[1], 65u);
-    EXPECT_EQ(sphere.indices[2], 1u);
-    EXPECT_EQ(sphere.indices[130], 2u * 65u + 64u);
-    EXPECT_EQ(sphere.indices[131], 65u + 64u);
+    EXPECT_EQ(sphere.indices[1], 0u);
+    EXPECT_EQ(sphere.indices[2], 65u);
+    EXPECT_EQ(sphere.indices[3], 1u);
+    EXPECT_EQ(sphere.indices[131], 2u * 65u + 64u);
+    EXPECT_EQ(sphere.indices[132], 65u + 64u);
+}
+
+// The triangles GL draws from a mesh, by the rules of its primitive: a list in threes; a strip's
+// triangle i is (i, i+1, i+2) for even i and (i+1, i, i+2) for odd i, so that all of a strip's
+// triangles keep the winding of its first (OpenGL 3.3 core, section 2.6.1).
+std::vector<std::array<std::uint32_t, 3>> trianglesAsDrawn(const MeshData& mesh) {
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    const std::vector<std::uint32_t>& i = mesh.indices;
+    if (mesh.primitive == Primitive::Triangles) {
+        for (size_t k = 0; k + 2 < i.size(); k += 3) triangles.push_back({i[k], i[k + 1], i[k + 2]});
+    } else {
+        for (size_t k = 0; k + 2 < i.size(); ++k) {
+            if (k % 2 == 0) triangles.push_back({i[k], i[k + 1], i[k + 2]});
+            else triangles.push_back({i[k + 1], i[k], i[k + 2]});
+        }
+    }
+    return triangles;
+}
+
+struct WindingCount {
+    int front = 0, back = 0;
+    int degenerate = 0;  // no area: nothing is drawn
+    int edgeOn = 0;      // across the surface, not on it
+    double frontArea = 0.0;
+};
+
+// Counts a mesh's drawn triangles by the side they show: front when counter-clockwise seen from
+// the side its vertex normals point to (GL's default front face), back when clockwise.
+// Triangles with no area (the sphere's poles, a strip's repeated index) and triangles standing
+// edge-on to their normals (where a strip turns to the next row, its three vertices lie on one
+// meridian: a sliver inside the sphere, in the meridian's plane) are counted apart.
+WindingCount countWinding(const MeshData& mesh) {
+    WindingCount count;
+    for (const auto& t : trianglesAsDrawn(mesh)) {
+        const glm::vec3 a = mesh.positions[t[0]], b = mesh.positions[t[1]], c = mesh.positions[t[2]];
+        const glm::vec3 geometric = glm::cross(b - a, c - a);
+        // no area: two corners in one place (twice the area under 1e-5 of the longest edge
+        // squared; the south pole's vertices differ by float rounding, about 1e-7)
+        const float longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+        if (glm::length(geometric) <= 1e-5f * longest * longest) {
+            ++count.degenerate;
+            continue;
+        }
+        const glm::vec3 shading = mesh.normals[t[0]] + mesh.normals[t[1]] + mesh.normals[t[2]];
+        if (std::abs(glm::dot(glm::normalize(geometric), glm::normalize(shading))) < 0.01f) {
+            ++count.edgeOn;
+            continue;
+        }
+        if (glm::dot(geometric, shading) > 0.0f) {
+            ++count.front;
+            count.frontArea += 0.5 * double(glm::length(geometric));
+        } else {
+            ++count.back;
+        }
+    }
+    return count;
+}
+
+// Every mesh the suite generates is counter-clockwise seen from outside, so the samples may cull
+// back faces (glEnable(GL_CULL_FACE)) and lose nothing: checked triangle by triangle as GL
+// assembles them, for the sphere strip at the sizes the samples use and at odd ones.
+TEST(Winding, EveryGeneratedMeshIsCounterClockwiseSeenFromOutside) {
+    for (const auto& [x, y] : {std::pair{64, 64}, std::pair{64, 32}, std::pair{3, 2}, std::pair{7, 5}}) {
+        SCOPED_TRACE("uvSphere(" + std::to_string(x) + ", " + std::to_string(y) + ")");
+        const WindingCount strip = countWinding(uvSphere(x, y));
+        EXPECT_EQ(strip.back, 0);
+        // every quad of the grid is two drawn triangles, except one per quad at the two poles
+        EXPECT_EQ(strip.front, 2 * x * y - 2 * x);
+        // each of the y - 1 turns from one row to the next adds one empty and one edge-on triangle
+        EXPECT_EQ(strip.edgeOn, y - 1);
+        EXPECT_EQ(strip.degenerate, 1 + 2 * x + (y - 1));  // and the one at the start
+        const WindingCount list = countWinding(uvSphereTriangles(x, y));
+        EXPECT_EQ(list.back, 0);
+        EXPECT_EQ(list.front, strip.front);
+        EXPECT_NEAR(list.frontArea, strip.frontArea, 1e-4 * strip.frontArea);
+    }
+    // The 64 x 64 sphere's front triangles cover it: within 1 % of 4 pi, from below.
+    const WindingCount sphere = countWinding(uvSphere(64, 64));
+    EXPECT_NEAR(sphere.frontArea, 4.0 * std::numbers::pi, 0.01 * 4.0 * std::numbers::pi);
+    const WindingCount box = countWinding(cube());
+    EXPECT_EQ(box.front, 12);
+    EXPECT_EQ(box.back, 0);
+    EXPECT_DOUBLE_EQ(box.frontArea, 24.0);
+    const WindingCount q = countWinding(quad());
+    EXPECT_EQ(q.front, 2);
+    EXPECT_EQ(q.back, 0);
 }
 
 // Every non-degenerate triangle of the list variant faces outwards (counter-clockwise seen from
@@ -108,6 +205,30 @@ void expectClosedOutwardMesh(const MeshData& mesh) {
     for (size_t i = 0; i < mesh.positions.size(); ++i) {
         EXPECT_NEAR(glm::dot(glm::vec3(mesh.tangents[i]), mesh.normals[i]), 0.0f, 1e-6f);
     }
+}
+
+// The glTF files the build generates (resources/models) are wound the same way, as the glTF
+// specification asks: the renderer culls back faces of every primitive whose material is not
+// doubleSided (common/gltf_renderer.cpp), so none of those may show its back.
+TEST(Winding, EveryGeneratedGltfPrimitiveThatIsNotDoubleSidedFacesItsNormals) {
+    int files = 0, culled = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(modelDir())) {
+        if (entry.path().extension() != ".gltf") continue;
+        ++files;
+        const Model model = loadModel(entry.path());
+        for (size_t p = 0; p < model.primitives.size(); ++p) {
+            const ModelPrimitive& primitive = model.primitives[p];
+            if (model.materials[size_t(primitive.material)].doubleSided) continue;
+            SCOPED_TRACE(entry.path().filename().string() + " primitive " + std::to_string(p));
+            const WindingCount count = countWinding(primitive.mesh);
+            EXPECT_EQ(count.back, 0);
+            EXPECT_GT(count.front, 0);
+            ++culled;
+        }
+    }
+    // unlit_showcase, pbr_showcase and pbr_workflows in its four forms
+    EXPECT_GE(files, 6);
+    EXPECT_GT(culled, 20);
 }
 
 TEST(Cube, TwentyFourVerticesFacingOutward) {
