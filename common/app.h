@@ -138,7 +138,8 @@ private:
     double startSeconds_ = 0.0;  // context clock when the context was made: scene time 0
     std::chrono::steady_clock::time_point constructed_ = std::chrono::steady_clock::now();
     double startupSeconds_ = 0.0;  // App constructed (context creation included) -> first frame
-    double frameStart_ = 0.0;
+    double lastFrameEnd_ = 0.0;       // --benchmark: context clock when the last frame ended
+    double firstFrameSeconds_ = 0.0;  // --benchmark: process start -> first frame finished
     double precomputeSeconds_ = 0.0;
     std::vector<double> frameMilliseconds_;
     std::vector<std::pair<std::filesystem::path, std::string>> outputFiles_;
