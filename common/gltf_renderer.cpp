@@ -25,6 +25,7 @@ GltfRenderer::GltfRenderer(Shader& shader)
     shader_.set("irradianceMap", kFirstIblUnit);
     shader_.set("prefilterMap", kFirstIblUnit + 1);
     shader_.set("brdfLUT", kFirstIblUnit + 2);
+    shader_.set("environmentMap", kFirstIblUnit + 3);
     setLights({});
 }
 

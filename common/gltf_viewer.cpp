@@ -17,9 +17,9 @@ namespace pbr {
 namespace {
 
 // The glTF extensions the shading path draws; any other a file lists gets a line on stderr.
-const std::vector<std::string> kDrawnExtensions = {
-    "KHR_lights_punctual", "KHR_texture_transform", "KHR_materials_unlit",
-    "KHR_materials_pbrSpecularGlossiness"};
+const std::vector<std::string> kDrawnExtensions = {"KHR_lights_punctual", "KHR_texture_transform",
+                                                   "KHR_materials_unlit",
+                                                   "KHR_materials_pbrSpecularGlossiness"};
 
 std::string joined(const std::vector<std::string>& names) {
     std::string text;
@@ -58,8 +58,8 @@ void describe(const Model& model, bool punctual) {
 int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     std::vector<FlagSpec> flags = iblFlags();
     flags.push_back(FlagSpec::text(
-        "--model", "FILE", "a .gltf or .glb to draw (default: " + config.defaultModelDescription +
-                               ")"));
+        "--model", "FILE",
+        "a .gltf or .glb to draw (default: " + config.defaultModelDescription + ")"));
     flags.push_back(FlagSpec::choice(
         "--tonemap", cpu::toneMapperChoices(cpu::ToneMapper::KhronosNeutral),
         "the tone mapper after exposure (default khronos-neutral: keeps base colours true up to "
@@ -110,10 +110,11 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         environment.emplace(*cache, environmentFile(app.options()));
         environment->environmentMap();  // for the sky
         irradianceMap.emplace(environment->irradianceMap(32));
-        prefilterMap.emplace(environment->prefilteredMap(128, 5, 1024));
+        prefilterMap.emplace(environment->prefilteredMap(128, 5, kPrefilterSamples));
         brdfLUT.emplace(brdfLut(*cache, 512, 1024, BrdfLutChannels::ScaleBias));
         app.addPrecomputeSeconds(cache->computeSeconds());
-        useIblMaps(shader, *irradianceMap, *prefilterMap, *brdfLUT, GltfRenderer::kFirstIblUnit);
+        useIblMaps(shader, environment->environmentMap(), *irradianceMap, *prefilterMap, *brdfLUT,
+                   GltfRenderer::kFirstIblUnit);
         skybox.emplace();
         skybox->setToneMapping(toneMapper, exposure);
     }

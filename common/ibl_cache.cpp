@@ -17,7 +17,7 @@ namespace {
 constexpr const char* kKeyName = "pbr.cacheKey";
 // The C++ side of the maps (the HDR decoder, the face order, the sizes of the mip chain): the
 // shaders are hashed into every key, this is counted by hand. Raise it when that code changes.
-constexpr const char* kCodeVersion = "pbr ibl cache 4";
+constexpr const char* kCodeVersion = "pbr ibl cache 5";
 
 // The largest radiance the IBL maps carry. Their sums weight radiance by the GGX lobe (up to about
 // 1e4 at roughness 0.25) over thousands of samples; in 32-bit floats (up to 3.4e38) that leaves
@@ -162,16 +162,25 @@ TextureCube IblCache::cube(const MapFile& file, const std::function<TextureCube(
     return cube;
 }
 
+std::optional<Texture2D> IblCache::loadTexture(const fs::path& path, const MapFile& file,
+                                               KtxFormat format) {
+    if (std::optional<KtxImage> image = load(path, file.key)) {
+        if (image->format == format && image->faces == 1) return Texture2D::fromKtx(*image);
+        std::fprintf(stderr, "note: %s: not the expected format; not used\n",
+                     displayPath(path).c_str());
+    }
+    return std::nullopt;
+}
+
 Texture2D IblCache::texture(const MapFile& file, KtxFormat format,
                             const std::function<Texture2D()>& compute) {
+    // What the build baked comes first: it depends on nothing a user can change at run time.
+    if (std::optional<Texture2D> baked = loadTexture(iblDir() / file.name, file, format)) {
+        return std::move(*baked);
+    }
     if (!dir_) return timed(compute);
-    const fs::path path = *dir_ / file.name;
-    if (std::optional<KtxImage> image = load(path, file.key)) {
-        if (image->format == format && image->faces == 1) {
-            return Texture2D::fromKtx(*image);
-        }
-        std::fprintf(stderr, "note: %s: not the expected format; recomputing\n",
-                     displayPath(path).c_str());
+    if (std::optional<Texture2D> cached = loadTexture(*dir_ / file.name, file, format)) {
+        return std::move(*cached);
     }
     Texture2D texture = timed(compute);
     store(file, texture.toKtx(format));
@@ -241,8 +250,7 @@ MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels) {
         std::string(sheen ? "brdf_lut_sheen_" : "brdf_lut_") + std::to_string(size);
     return {name + ".ktx",
             std::string(kCodeVersion) + "; " + name + " samples " + std::to_string(samples) +
-                "; shaders " + shaderCodeHash("ibl/fullscreen.vert", "ibl/brdf_lut.frag") +
-                "; renderer " + renderer(),
+                "; shaders " + shaderCodeHash("ibl/fullscreen.vert", "ibl/brdf_lut.frag"),
             "BRDF LUT " + std::to_string(size) + "^2, " + std::to_string(samples) +
                 " samples; x = NdotV, y = roughness at texel centres; R = GGX scale, G = GGX "
                 "bias to F0" +

@@ -42,7 +42,8 @@ public:
     explicit IblCache(std::optional<std::filesystem::path> dir);
 
     // <dir>/<file.name> when it holds a map made under `file.key`, else `compute()` (stored for
-    // next time).
+    // next time). A texture (a BRDF LUT) is first looked for in iblDir(), where the build bakes
+    // it, cache or no cache.
     TextureCube cube(const MapFile& file, const std::function<TextureCube()>& compute);
     Texture2D texture(const MapFile& file, KtxFormat format,
                       const std::function<Texture2D()>& compute);
@@ -52,6 +53,8 @@ public:
 
 private:
     std::optional<KtxImage> load(const std::filesystem::path& path, const std::string& key);
+    std::optional<Texture2D> loadTexture(const std::filesystem::path& path, const MapFile& file,
+                                         KtxFormat format);
     void store(const MapFile& file, KtxImage image);
     template <typename T>
     T timed(const std::function<T()>& compute);
@@ -72,12 +75,12 @@ public:
 
     const TextureCube& environmentMap();  // 512^2, RGB16F, full mip chain
     TextureCube irradianceMap(int size = 32, float sampleDelta = kIrradianceSampleDelta);
-    TextureCube prefilteredMap(int size = 128, int levels = 5, int samples = 1024);
+    TextureCube prefilteredMap(int size = 128, int levels = 5, int samples = kPrefilterSamples);
 
     // What each map is as a file (see MapFile): 06 writes the maps under these names.
     MapFile environmentFile() const;
     MapFile irradianceFile(int size = 32, float sampleDelta = kIrradianceSampleDelta) const;
-    MapFile prefilteredFile(int size = 128, int levels = 5, int samples = 1024) const;
+    MapFile prefilteredFile(int size = 128, int levels = 5, int samples = kPrefilterSamples) const;
 
 private:
     IblCache& cache_;
@@ -88,7 +91,9 @@ private:
 };
 
 // The BRDF LUT (see computeBrdfLut) through the cache, and what it is as a file: RG16F for
-// ScaleBias, RGBA16F for ScaleBiasSheen.
+// ScaleBias, RGBA16F for ScaleBiasSheen. It depends on no input, so the build bakes the ones the
+// samples use into iblDir() (resources/ibl) and a start reads them from there. Its key names no
+// renderer: a table made on one GL implementation serves every other.
 Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channels);
 MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels);
 KtxFormat brdfLutFormat(BrdfLutChannels channels);

@@ -38,6 +38,9 @@ fs::path modelDir() {
 fs::path environmentDir() {
     return resourceDir() / "environments";
 }
+fs::path iblDir() {
+    return resourceDir() / "ibl";
+}
 
 std::optional<fs::path> defaultCacheDir() {
     if (const char* dir = variable("PBR_CACHE_DIR")) return fs::path(dir);

@@ -16,6 +16,7 @@ std::filesystem::path resourceDir();
 std::filesystem::path materialDir();     // resourceDir() / "materials": the PBR material sets
 std::filesystem::path modelDir();        // resourceDir() / "models": the project's glTF assets
 std::filesystem::path environmentDir();  // resourceDir() / "environments": its HDR environments
+std::filesystem::path iblDir();          // resourceDir() / "ibl": the BRDF LUTs the build bakes
 // Where the IBL samples keep their precomputed maps: $PBR_CACHE_DIR, else
 // $XDG_CACHE_HOME/pbr-samples, else $HOME/.cache/pbr-samples; nullopt when none is set.
 std::optional<std::filesystem::path> defaultCacheDir();

@@ -25,6 +25,7 @@
 
 #include "app.h"
 #include "brdf.h"
+#include "cube_geometry.h"
 #include "error.h"
 #include "framebuffer.h"
 #include "ibl.h"
@@ -42,49 +43,10 @@ namespace fs = std::filesystem;
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kEnvironmentSize = 512;
 constexpr int kIrradianceSize = 32;
-constexpr int kPrefilterSize = 128, kPrefilterLevels = 5, kPrefilterSamples = 1024;
+constexpr int kPrefilterSize = 128, kPrefilterLevels = 5,
+              kPrefilterSamples = pbr::kPrefilterSamples;
 constexpr int kLutSize = 512, kLutSamples = 1024;
 constexpr double kLearnOpenGlDelta = 0.025;
-
-// ---------------------------------------------------------------------------------------------
-// Cube map geometry, GL's convention
-
-// The unit direction through face coordinates (s, t) in [-1, 1] of `face` (+X, -X, +Y, -Y, +Z,
-// -Z): GL's cube map texture selection (spec table 8.19) run backwards.
-dvec3 faceDirection(int face, double s, double t) {
-    switch (face) {
-        case 0:
-            return glm::normalize(dvec3(1.0, -t, -s));
-        case 1:
-            return glm::normalize(dvec3(-1.0, -t, s));
-        case 2:
-            return glm::normalize(dvec3(s, 1.0, t));
-        case 3:
-            return glm::normalize(dvec3(s, -1.0, -t));
-        case 4:
-            return glm::normalize(dvec3(s, -t, 1.0));
-        default:
-            return glm::normalize(dvec3(-s, -t, -1.0));
-    }
-}
-
-// The face coordinate of texel centre k of n, in [-1, 1]. readFace gives row 0 at t = 0, so the
-// same mapping serves columns (s) and rows (t).
-double texelCentre(int k, int n) {
-    return 2.0 * (double(k) + 0.5) / double(n) - 1.0;
-}
-
-// The solid angle of the face rectangle from (0, 0) to (x, y), signed: the integral of the area
-// element dx dy / (1 + x^2 + y^2)^(3/2) (exact, so texels near the face corners are right too).
-double areaElement(double x, double y) {
-    return std::atan2(x * y, std::sqrt(x * x + y * y + 1.0));
-}
-
-double texelSolidAngle(int i, int j, int n) {
-    const double x0 = 2.0 * i / n - 1.0, x1 = 2.0 * (i + 1) / n - 1.0;
-    const double y0 = 2.0 * j / n - 1.0, y1 = 2.0 * (j + 1) / n - 1.0;
-    return areaElement(x0, y0) - areaElement(x0, y1) - areaElement(x1, y0) + areaElement(x1, y1);
-}
 
 double luminance(const dvec3& c) {
     return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
@@ -135,9 +97,10 @@ SphereQuadrature quadrature(const CubeLevel& level) {
     for (int face = 0; face < 6; ++face) {
         for (int j = 0; j < n; ++j) {
             for (int i = 0; i < n; ++i) {
-                q.direction.push_back(faceDirection(face, texelCentre(i, n), texelCentre(j, n)));
+                q.direction.push_back(pbr::cubeFaceDirection(face, pbr::cubeTexelCentre(i, n),
+                                                             pbr::cubeTexelCentre(j, n)));
                 q.radiance.push_back(level.at(face, i, j));
-                q.solidAngle.push_back(texelSolidAngle(i, j, n));
+                q.solidAngle.push_back(pbr::cubeTexelSolidAngle(i, j, n));
             }
         }
     }
@@ -147,7 +110,9 @@ SphereQuadrature quadrature(const CubeLevel& level) {
 // A texel of an n^2 cube map.
 struct Texel {
     int face, i, j, n;
-    dvec3 direction() const { return faceDirection(face, texelCentre(i, n), texelCentre(j, n)); }
+    dvec3 direction() const {
+        return pbr::cubeFaceDirection(face, pbr::cubeTexelCentre(i, n), pbr::cubeTexelCentre(j, n));
+    }
 };
 
 // `perAxis`^2 texels on each of the six faces of an n^2 cube map, at the centres of equal blocks
@@ -419,8 +384,8 @@ void measurePrefiltered(const Environment& env, Report& report) {
         const dvec3 box = env.level2.at(t.face, t.i, t.j);
         // (b) a bilinear read of level 0 at the centre: also LearnOpenGL's mirror level, whose
         // GGX samples at roughness 0 all fall on N and read level 0
-        const dvec3 point =
-            env.level0.bilinear(t.face, texelCentre(t.i, t.n), texelCentre(t.j, t.n));
+        const dvec3 point = env.level0.bilinear(t.face, pbr::cubeTexelCentre(t.i, t.n),
+                                                pbr::cubeTexelCentre(t.j, t.n));
         oursVsBox.push_back(relativeLuminanceError(ours, box));
         oursVsPoint.push_back(relativeLuminanceError(ours, point));
         pointVsBox.push_back(relativeLuminanceError(point, box));

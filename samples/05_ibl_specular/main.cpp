@@ -42,7 +42,8 @@ int main(int argc, char** argv) try {
     pbr::IblEnvironment environment(cache, pbr::environmentFile(app.options()));
     const pbr::TextureCube& environmentMap = environment.environmentMap();
     const pbr::TextureCube irradianceMap = environment.irradianceMap(32);
-    const pbr::TextureCube prefilterMap = environment.prefilteredMap(128, 5, 1024);
+    const pbr::TextureCube prefilterMap =
+        environment.prefilteredMap(128, 5, pbr::kPrefilterSamples);
     const pbr::Texture2D brdfLUT = pbr::brdfLut(cache, 512, 1024, pbr::BrdfLutChannels::ScaleBias);
     app.addPrecomputeSeconds(cache.computeSeconds());
 
@@ -66,7 +67,7 @@ int main(int argc, char** argv) try {
         shader.set("ao", 1.0f);
     }
     // Units 5-7 hold the split-sum maps for the whole run: nothing else binds them.
-    pbr::useIblMaps(shader, irradianceMap, prefilterMap, brdfLUT, 5);
+    pbr::useIblMaps(shader, environmentMap, irradianceMap, prefilterMap, brdfLUT, 5);
     shader.set("exactSplitSum", app.flagChoice("--split-sum") == "exact" ? 1 : 0);
     pbr::setPointLights(shader, pbr::kGridLightPositions, glm::vec3(300.0f));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};

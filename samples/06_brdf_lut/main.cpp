@@ -43,8 +43,8 @@ int main(int argc, char** argv) try {
     if (const auto hdr = app.flag("--hdr")) {
         pbr::IblEnvironment environment(cache, *hdr);
         bake(environment.irradianceFile(32), environment.irradianceMap(32).toKtx());
-        bake(environment.prefilteredFile(128, 5, 1024),
-             environment.prefilteredMap(128, 5, 1024).toKtx());
+        bake(environment.prefilteredFile(128, 5, pbr::kPrefilterSamples),
+             environment.prefilteredMap(128, 5, pbr::kPrefilterSamples).toKtx());
     }
     app.addPrecomputeSeconds(cache.computeSeconds());
 

@@ -1,17 +1,21 @@
 #version 330 core
 // Diffuse irradiance: the cosine-weighted average of the environment over the hemisphere around
-// N, by Riemann sums over (phi, theta) as in the text, but at the midpoints of a whole number of
+// N. The environment's bright texels (its sun) are summed exactly, each by its solid angle and
+// cosine; the rest is sampled by Riemann sums over (phi, theta) as in the text, but at the
+// midpoints of a whole number of
 // steps (the text's left-endpoint sums stop short of pi/2: 0.3 % low at its step of 0.025, 2 % at
 // 0.05), each sample reading the environment at the mip level of its cell's size. Stored as
 // irradiance / pi (what a white Lambertian surface reflects), so a constant environment L gives L.
 out vec4 FragColor;
 in vec3 WorldPos;
 
-uniform samplerCube environmentMap;
+uniform samplerCube environmentMap;  // the rest: the environment less its bright texels
 uniform float sampleDelta;   // radians between samples along phi and theta
 uniform float sourceTexelSolidAngle;  // 4 pi / (6 size^2) of the environment's level 0
 
 const float PI = 3.14159265359;
+
+#include "bright_texels.glsl"
 
 void main()
 {
@@ -46,5 +50,10 @@ void main()
             nrSamples++;
         }
     }
-    FragColor = vec4(PI * irradiance / nrSamples, 1.0);
+    irradiance = PI * irradiance / nrSamples;
+
+    vec3 bright = vec3(0.0);
+    for (int i = 0; i < brightCount; ++i)
+        bright += brightRadiance[i] * (brightDirection[i].w * max(dot(N, brightDirection[i].xyz), 0.0));
+    FragColor = vec4(irradiance + bright / PI, 1.0);
 }

@@ -1,19 +1,22 @@
 #version 330 core
 // The prefiltered environment for one roughness (one mip level of the specular cube map): the
 // environment averaged over the GGX lobe around the reflection vector, with N = V = R as the
-// split-sum approximation assumes. GGX importance sampling with Hammersley points; each sample
-// reads the source at the mip level whose texels cover the sample's share of the sphere
-// (LOD 0.5 * log2(saSample / saTexel)), which keeps a small bright sun from sparkling.
+// split-sum approximation assumes. The environment's bright texels (its sun) are summed exactly,
+// each weighted by D(H) N.L and its solid angle over the lobe's whole weight; the rest by GGX
+// importance sampling with Hammersley points, each sample reading it at the mip level whose
+// texels cover the sample's share of the sphere (LOD 0.5 * log2(saSample / saTexel)).
 out vec4 FragColor;
 in vec3 WorldPos;
 
-uniform samplerCube environmentMap;
+uniform samplerCube environmentMap;  // roughness 0: the environment; else the rest, less its bright texels
 uniform float roughness;
 uniform int sampleCount;
 uniform float sourceTexelSolidAngle;  // 4 pi / (6 size^2) of the environment's level 0
 uniform float footprintLod;  // log2(source size / this level's size): one texel of this level
+uniform float lobeNormalization;  // the integral of D(H) N.L over N.L > 0 (pbr::prefilterNormalization)
 
 #include "importance_sampling.glsl"
+#include "bright_texels.glsl"
 
 void main()
 {
@@ -50,5 +53,16 @@ void main()
             totalWeight += NdotL;
         }
     }
-    FragColor = vec4(prefilteredColor / totalWeight, 1.0);
+    vec3 bright = vec3(0.0);
+    for (int i = 0; i < brightCount; ++i)
+    {
+        vec3 L = brightDirection[i].xyz;
+        float NdotL = dot(N, L);
+        if (NdotL > 0.0)
+        {
+            float D = DistributionGGX(N, normalize(V + L), roughness);
+            bright += brightRadiance[i] * (brightDirection[i].w * D * NdotL);
+        }
+    }
+    FragColor = vec4(prefilteredColor / totalWeight + bright / lobeNormalization, 1.0);
 }

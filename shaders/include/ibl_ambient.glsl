@@ -20,6 +20,12 @@
 uniform samplerCube irradianceMap;  // irradiance / pi of the environment
 uniform samplerCube prefilterMap;   // mip m: the environment prefiltered for roughness m / maxLod
 uniform sampler2D brdfLUT;          // x = NdotV, y = roughness: (scale, bias) to F0
+// The environment itself: the mirror end of the prefiltered range. The prefiltered map's level 0
+// is only 128^2, magnified on a smooth sphere into stair-stepped reflections and sparkling
+// single texels of sun on its rim; below the first rough level the reflection blends from the
+// environment, read at the mip level the screen asks for, to level 1, as the texture unit would
+// have blended level 0 to level 1.
+uniform samplerCube environmentMap;
 // The prefiltered map's last mip level (the text's MAX_REFLECTION_LOD, 4 for five levels), set
 // from the map itself by pbr::useIblMaps, never by hand.
 uniform float prefilterMaxLod;
@@ -40,7 +46,10 @@ SplitSumReads readSplitSum(vec3 N, vec3 V, float roughness)
     s.NdotV = max(dot(N, V), 0.0);
     vec3 R = reflect(-V, N);
     s.irradiance = texture(irradianceMap, N).rgb;
-    s.prefilteredColor = textureLod(prefilterMap, R, roughness * prefilterMaxLod).rgb;
+    float lod = roughness * prefilterMaxLod;
+    vec3 mirror = texture(environmentMap, R).rgb;  // outside the branch: its LOD needs derivatives
+    s.prefilteredColor = lod < 1.0 ? mix(mirror, textureLod(prefilterMap, R, 1.0).rgb, lod)
+                                   : textureLod(prefilterMap, R, lod).rgb;
     s.envBRDF = texture(brdfLUT, vec2(s.NdotV, roughness)).rg;
     return s;
 }

@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "brdf.h"
+#include "cube_geometry.h"
+#include "ibl.h"
 
 namespace pbr::cpu {
 namespace {
@@ -107,6 +109,44 @@ TEST(BrdfQuadrature, AgreesWithABruteForceSumOverLightDirections) {
             EXPECT_NEAR(sheen, brute.z, 1e-3) << NdotV << ", " << roughness;
         }
     }
+}
+
+// The prefiltered map's weight (pbr::prefilterNormalization integrates over the half vector)
+// against a sum over light directions that needs no change of variables: midpoints in
+// (theta_L, phi) of D_GGX(H) N.L sin(theta_L) with N = V. At roughness 1 D is 1 / pi and the
+// integral is exactly 1. A Jacobian of 1 instead of 4 cos(theta_H), or an N.L left out, misses.
+TEST(IblWeights, PrefilterNormalizationAgreesWithASumOverLightDirections) {
+    EXPECT_NEAR(prefilterNormalization(1.0), 1.0, 1e-6);
+    for (double roughness : {0.25, 0.5, 0.75}) {
+        const double a2 = std::pow(roughness, 4.0), pi = std::numbers::pi;
+        constexpr int kSteps = 20000;
+        const double step = (pi / 2.0) / kSteps;
+        double sum = 0.0;
+        for (int k = 0; k < kSteps; ++k) {
+            const double thetaL = (k + 0.5) * step;
+            const double cosH = std::cos(thetaL / 2.0);  // N = V: H halfway, theta_H = theta_L / 2
+            const double denom = cosH * cosH * (a2 - 1.0) + 1.0;
+            sum += a2 / (pi * denom * denom) * std::cos(thetaL) * std::sin(thetaL) * step;
+        }
+        sum *= 2.0 * pi;  // phi
+        EXPECT_NEAR(prefilterNormalization(roughness), sum, 1e-4 * sum)
+            << "roughness " << roughness;
+    }
+}
+
+// The cube map's texel solid angles tile the sphere: 4 pi in all, and a face's centre texel
+// close to (2 / n)^2 (the face is at distance 1).
+TEST(CubeGeometry, TexelSolidAnglesTileTheSphere) {
+    for (int n : {1, 2, 7, 64}) {
+        double total = 0.0;
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) total += cubeTexelSolidAngle(i, j, n);
+        EXPECT_NEAR(6.0 * total, 4.0 * std::numbers::pi, 1e-9) << n;
+    }
+    EXPECT_NEAR(cubeTexelSolidAngle(32, 32, 64), std::pow(2.0 / 64.0, 2.0), 1e-6);
+    // the centre of +Y's face looks up, of -Z's forward
+    EXPECT_NEAR(cubeFaceDirection(2, 0.0, 0.0).y, 1.0, 1e-12);
+    EXPECT_NEAR(cubeFaceDirection(5, 0.0, 0.0).z, -1.0, 1e-12);
 }
 
 }  // namespace
