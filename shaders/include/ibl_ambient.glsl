@@ -47,9 +47,14 @@ SplitSumReads readSplitSum(vec3 N, vec3 V, float roughness)
     vec3 R = reflect(-V, N);
     s.irradiance = texture(irradianceMap, N).rgb;
     float lod = roughness * prefilterMaxLod;
-    vec3 mirror = texture(environmentMap, R).rgb;  // outside the branch: its LOD needs derivatives
-    s.prefilteredColor = lod < 1.0 ? mix(mirror, textureLod(prefilterMap, R, 1.0).rgb, lod)
-                                   : textureLod(prefilterMap, R, lod).rgb;
+    // R's screen-space derivatives are taken for every fragment (derivatives need all of them);
+    // the environment itself is read only where the blend needs it
+    vec3 dRdx = dFdx(R), dRdy = dFdy(R);
+    if (lod < 1.0)
+        s.prefilteredColor = mix(textureGrad(environmentMap, R, dRdx, dRdy).rgb,
+                                 textureLod(prefilterMap, R, 1.0).rgb, lod);
+    else
+        s.prefilteredColor = textureLod(prefilterMap, R, lod).rgb;
     s.envBRDF = texture(brdfLUT, vec2(s.NdotV, roughness)).rg;
     return s;
 }
