@@ -125,13 +125,14 @@ void expectSquareMatchesCpu(const fs::path& file, const std::map<std::string, in
     const glm::vec3 eye(0.0f, 0.0f, 3.0f);
     const Image image = render07(file.parent_path(), file, eye);
     const Rays rays(model, eye);
+    const ModelRayCaster caster(model, glm::dmat4(1.0));
     const Material& material = model.materials.at(0);
     std::map<std::string, int> counts;
     int worst = 0;
     for (int py = 0; py < kSize; py += 2) {
         for (int px = 0; px < kSize; px += 2) {
             const auto [origin, direction] = rays.at(px, py);
-            const auto hit = hitModel(model, glm::dmat4(1.0), origin, direction);
+            const auto hit = caster.hit(origin, direction);
             if (!hit || hit->minBarycentric < 0.01) continue;
             const glm::vec3 position(hit->position);
             const Shade shade = [&](const glm::vec3& normal) {
@@ -234,11 +235,12 @@ TEST(Reference, Gltf07MaskKeepsTexelsAtOrAboveTheCutoff) {
     const glm::vec3 eye(0.0f, 0.0f, 2.6f);
     const Image image = render07(dir, file, eye);
     const Rays rays(model, eye);
+    const ModelRayCaster caster(model, glm::dmat4(1.0));
     int kept = 0, dropped = 0;
     for (int py = 0; py < kSize; ++py) {
         for (int px = 0; px < kSize; ++px) {
             const auto [origin, direction] = rays.at(px, py);
-            const auto hit = hitModel(model, glm::dmat4(1.0), origin, direction);
+            const auto hit = caster.hit(origin, direction);
             if (!hit) continue;
             const glm::dvec2 texel = hit->uv0 * 16.0;
             const glm::dvec2 within = texel - glm::floor(texel);
@@ -274,11 +276,12 @@ SphereCheck compareSpheres(const fs::path& dir, const std::string& sample, const
     const glm::vec3 eye = centre + glm::vec3(0.0f, 0.2f, 4.0f);
     const Image image = render07(dir, file, eye, {}, sample);
     const Rays rays(model, eye);
+    const ModelRayCaster caster(model, glm::dmat4(1.0));
     SphereCheck check;
     for (int py = 0; py < kSize; ++py) {
         for (int px = py % 2; px < kSize; px += 2) {  // every other pixel, in a checkerboard
             const auto [origin, direction] = rays.at(px, py);
-            const auto hit = hitModel(model, glm::dmat4(1.0), origin, direction);
+            const auto hit = caster.hit(origin, direction);
             if (!hit || hit->minBarycentric < 0.01) continue;
             const Material& material =
                 model.materials[size_t(model.primitives[size_t(hit->primitive)].material)];
@@ -312,12 +315,20 @@ SphereCheck compareShowcaseSpheres(
     const std::string& name,
     const std::function<bool(const Material&, const Image& mr, float& metallic, float& roughness)>&
         materialOf) {
+    std::map<std::string, Image> textures;  // each material's, read once (not at every pixel)
     return compareSpheres(
         testOutputDir("reference_07_spheres_" + name), "07_gltf_metallic_roughness",
         modelDir() / "pbr_showcase.gltf", "sphere_",
         [&](const Model& model, const Material& material, const glm::vec3& position,
             const glm::vec3& normal) -> std::optional<cpu::GltfSurface> {
-            const Image mr = loadTextureImage(model, material.metallicRoughnessTexture, 3);
+            auto found = textures.find(material.name);
+            if (found == textures.end()) {
+                found = textures
+                            .emplace(material.name,
+                                     loadTextureImage(model, material.metallicRoughnessTexture, 3))
+                            .first;
+            }
+            const Image& mr = found->second;
             float metallic = 0.0f, roughness = 0.0f;
             if (!materialOf(material, mr, metallic, roughness)) return std::nullopt;
             return cpu::metallicRoughnessSurface(position, normal,

@@ -29,7 +29,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kWidth = 320, kHeight = 180;
+constexpr int kSceneWidth = 320, kSceneHeight = 180;
 const glm::vec3 kEye(0.0f, 5.5f, 12.0f);
 constexpr float kYaw = -90.0f, kPitch = -22.0f;
 
@@ -41,7 +41,7 @@ struct FloorPixel {
 // The floor point each pixel centre sees, unless a sphere is in the way (or nearly: rays that
 // pass within 2 cm of one are left out, for the silhouettes' antialiasing-free steps).
 std::optional<glm::vec3> floorPoint(const glm::dmat4& toWorld, double px, double py) {
-    const auto [origin, direction] = pixelRay(toWorld, kWidth, kHeight, int(px), int(py));
+    const auto [origin, direction] = pixelRay(toWorld, kSceneWidth, kSceneHeight, int(px), int(py));
     if (direction.y >= 0.0) return std::nullopt;
     const double t = -origin.y / direction.y;
     const glm::dvec3 hit = origin + t * direction;
@@ -70,7 +70,7 @@ TypeCheck checkType(const std::string& only, const std::vector<std::string>& ext
                     const std::function<int(const glm::vec3&)>& classify, bool stepEdges) {
     const fs::path dir = testOutputDir("reference_09_" + only);
     std::vector<std::string> args = {"--only",   only,     "--untextured", "--msaa", "0",
-                                     "--size",   std::to_string(kWidth) + "x" + std::to_string(kHeight),
+                                     "--size",   std::to_string(kSceneWidth) + "x" + std::to_string(kSceneHeight),
                                      "--camera", "0,5.5,12,-90,-22"};
     args.insert(args.end(), extra.begin(), extra.end());
     const SampleRender render =
@@ -86,11 +86,11 @@ TypeCheck checkType(const std::string& only, const std::vector<std::string>& ext
 
     const FlyCamera camera(kEye, kYaw, kPitch);
     const glm::dmat4 toWorld = glm::inverse(
-        glm::dmat4(camera.projectionMatrix(float(kWidth) / float(kHeight)) * camera.viewMatrix()));
+        glm::dmat4(camera.projectionMatrix(float(kSceneWidth) / float(kSceneHeight)) * camera.viewMatrix()));
     TypeCheck check;
     check.byClass.assign(size_t(classes), 0);
-    for (int py = 0; py < kHeight; ++py) {
-        for (int px = 0; px < kWidth; ++px) {
+    for (int py = 0; py < kSceneHeight; ++py) {
+        for (int px = 0; px < kSceneWidth; ++px) {
             const auto point = floorPoint(toWorld, px, py);
             if (!point) continue;
             const int cls = classify ? classify(*point) : 0;

@@ -51,12 +51,13 @@ TEST(Reference, GltfUnlit03IsFactorTimesVertexColourTimesTexel) {
                    glm::lookAt(framing.cameraPosition, framing.cameraPosition + glm::vec3(0, 0, -1),
                                glm::vec3(0, 1, 0))));
 
+    const ModelRayCaster caster(model, glm::dmat4(framing.normalize));
     int compared = 0, textured = 0;
     double worst = 0.0;
     for (int py = 0; py < kHeight; py += 4) {
         for (int px = 0; px < kWidth; px += 4) {
             const auto [origin, dir] = pixelRay(toWorld, kWidth, kHeight, px, py);
-            const auto hit = hitModel(model, glm::dmat4(framing.normalize), origin, dir);
+            const auto hit = caster.hit(origin, dir);
             if (!hit || hit->minBarycentric < 0.02) continue;
             const Material& material =
                 model.materials[size_t(model.primitives[size_t(hit->primitive)].material)];

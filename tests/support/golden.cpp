@@ -188,8 +188,13 @@ void rebuildReport() {
     const fs::path dir = goldenReportDir();
     const int lock = ::open((dir / ".lock").c_str(), O_CREAT | O_RDWR, 0644);
     if (lock >= 0) ::flock(lock, LOCK_EX);
+    // Only finished entries: another test's hidden temporary (".<id>.html.<digits>.tmp", see
+    // output.h) may be listed here and renamed away before it could be read.
     std::set<fs::path> entries;
-    for (const auto& file : fs::directory_iterator(dir / "entries")) entries.insert(file.path());
+    for (const auto& file : fs::directory_iterator(dir / "entries")) {
+        const std::string name = file.path().filename().string();
+        if (name.front() != '.' && file.path().extension() == ".html") entries.insert(file.path());
+    }
     int passed = 0, failed = 0, updated = 0;
     std::string failures, others;  // failures first: they are what a reader opens the page for
     for (const fs::path& entry : entries) {

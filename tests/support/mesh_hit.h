@@ -7,6 +7,7 @@
 // normal is the CPU's own inverse transpose of the model matrix times that, normalised.
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -42,8 +43,30 @@ struct ModelHit {
     double minBarycentric = 0.0;
     bool frontFacing = true;  // the triangle is counter-clockwise seen from the ray's origin
 };
-std::optional<ModelHit> hitModel(const Model& model, const glm::dmat4& world,
-                                 const glm::dvec3& origin, const glm::dvec3& direction);
+// The model prepared once for many rays: each primitive's matrices and a bounding volume
+// hierarchy over its triangles (so a ray visits a few dozen triangles, not every one; the hit is
+// the same as testing all of them). Keeps a reference to `model`, which must outlive it.
+class ModelRayCaster {
+public:
+    ModelRayCaster(const Model& model, const glm::dmat4& world);
+    std::optional<ModelHit> hit(const glm::dvec3& origin, const glm::dvec3& direction) const;
+
+    struct Node {  // a box; leaves hold triangles [first, first + count) of `order`
+        glm::dvec3 low, high;
+        int left = -1, right = -1, first = 0, count = 0;
+    };
+    struct Primitive {
+        glm::dmat4 matrix, inverse;
+        glm::dmat3 normalMatrix;
+        bool mirrored = false;      // negative determinant: the winding flips
+        std::vector<Node> nodes;    // nodes[0] is the root (empty: no triangles)
+        std::vector<int> order;     // triangle indices (index / 3), leaf by leaf
+    };
+
+private:
+    const Model& model_;
+    std::vector<Primitive> primitives_;
+};
 
 // The ray (origin on the near plane, unit direction) through the centre of pixel (px, py) of a
 // width x height image (y down), given `toWorld` = inverse(projection x view).
