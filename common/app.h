@@ -93,6 +93,8 @@ public:
         return orbit_ ? orbit_->projectionMatrix(aspect()) : camera_.projectionMatrix(aspect());
     }
     glm::vec3 cameraPosition() const { return orbit_ ? orbit_->position() : camera_.position(); }
+    // The active camera's view volume: what lies wholly outside it need not be drawn.
+    Frustum frustum() const { return Frustum(projection() * view()); }
 
     // A program from shaders/<vertex> and shaders/<fragment>, owned by the App so that R can
     // reload it. The reference stays valid for the App's life.

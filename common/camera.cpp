@@ -168,4 +168,26 @@ glm::mat4 OrbitCamera::projectionMatrix(float aspect) const {
     return glm::perspective(glm::radians(kFovYDegrees), aspect, nearPlane(), farPlane());
 }
 
+Frustum::Frustum(const glm::mat4& m) {
+    // Clip space keeps -w <= x, y, z <= w: each bound is a row of m added to or taken from the
+    // last row (glm is column-major: m[column][row]).
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int side = 0; side < 2; ++side) {
+            glm::vec4 plane;
+            for (int column = 0; column < 4; ++column) {
+                plane[column] = m[column][3] + (side == 0 ? m[column][axis] : -m[column][axis]);
+            }
+            planes_[size_t(2 * axis + side)] = plane / glm::length(glm::vec3(plane));
+        }
+    }
+}
+
+bool Frustum::mayContain(const glm::vec3& centre, float radius) const {
+    const float margin = radius * 1.001f + 1e-5f;
+    for (const glm::vec4& plane : planes_) {
+        if (glm::dot(glm::vec3(plane), centre) + plane.w < -margin) return false;
+    }
+    return true;
+}
+
 }  // namespace pbr

@@ -7,6 +7,8 @@
 //
 // OrbitCamera (07 on): circles a model's centre, the way glTF viewers do, for a model of any size
 // in its own units (see the class).
+#include <array>
+
 #include <glm/glm.hpp>
 
 namespace pbr {
@@ -136,6 +138,20 @@ private:
     float distance_;
     float yaw_;
     float pitch_;
+};
+
+// The view volume of a projection x view matrix as its six planes (Gribb and Hartmann's
+// extraction), to skip a draw that cannot reach the screen: a sphere wholly outside one plane
+// makes no fragment, so leaving it out changes no pixel and saves its vertices.
+class Frustum {
+public:
+    explicit Frustum(const glm::mat4& projectionView);
+    // False only when the sphere lies wholly outside the volume, past one of its planes (with a
+    // margin of a thousandth of the radius for rounding); true may still draw nothing.
+    bool mayContain(const glm::vec3& centre, float radius) const;
+
+private:
+    std::array<glm::vec4, 6> planes_;  // xyz: unit inward normal, w: offset (inside: >= 0)
 };
 
 }  // namespace pbr

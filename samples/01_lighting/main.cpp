@@ -50,9 +50,12 @@ int main(int argc, char** argv) try {
 
         // Metallic rises with the row (bottom row 0), roughness with the column; roughness is
         // kept at 0.05 or above, since a perfectly smooth sphere's point-light highlight vanishes.
+        // A sphere wholly out of view is skipped: it would draw nothing.
+        const pbr::Frustum view = app.frustum();
         for (int row = 0; row < grid.nrRows; ++row) {
             shader.set("metallic", float(row) / float(grid.nrRows));
             for (int col = 0; col < grid.nrColumns; ++col) {
+                if (!view.mayContain(grid.position(row, col), 1.0f)) continue;
                 const float roughness = float(col) / float(grid.nrColumns) + roughnessOffset;
                 shader.set("roughness", std::clamp(roughness, 0.05f, 1.0f));
                 shader.setModel(grid.model(row, col));

@@ -57,8 +57,10 @@ int main(int argc, char** argv) try {
         shader.set("camPos", app.camera().position());
         material.bind();
 
+        const pbr::Frustum view = app.frustum();  // a sphere wholly out of view draws nothing
         for (int row = 0; row < grid.nrRows; ++row) {
             for (int col = 0; col < grid.nrColumns; ++col) {
+                if (!view.mayContain(grid.position(row, col), 1.0f)) continue;
                 shader.setModel(grid.model(row, col));
                 sphere.draw();
             }

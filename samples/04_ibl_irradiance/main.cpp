@@ -47,9 +47,11 @@ int main(int argc, char** argv) try {
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
         irradianceMap.bind(0);
+        const pbr::Frustum view = app.frustum();  // a sphere wholly out of view draws nothing
         for (int row = 0; row < grid.nrRows; ++row) {
             shader.set("metallic", float(row) / float(grid.nrRows));
             for (int col = 0; col < grid.nrColumns; ++col) {
+                if (!view.mayContain(grid.position(row, col), 1.0f)) continue;
                 shader.set("roughness",
                            std::clamp(float(col) / float(grid.nrColumns), 0.05f, 1.0f));
                 shader.setModel(grid.model(row, col));

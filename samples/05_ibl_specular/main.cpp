@@ -83,8 +83,10 @@ int main(int argc, char** argv) try {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
+        const pbr::Frustum view = app.frustum();  // a sphere wholly out of view draws nothing
         if (textured) {
             for (int col = 0; col < row.nrColumns; ++col) {
+                if (!view.mayContain(row.position(0, col), 1.0f)) continue;
                 materials[size_t(col)].bind();
                 shader.setModel(row.model(0, col));
                 sphere.draw();
@@ -93,6 +95,7 @@ int main(int argc, char** argv) try {
             for (int r = 0; r < grid.nrRows; ++r) {
                 shader.set("metallic", float(r) / float(grid.nrRows));
                 for (int col = 0; col < grid.nrColumns; ++col) {
+                    if (!view.mayContain(grid.position(r, col), 1.0f)) continue;
                     shader.set("roughness",
                                std::clamp(float(col) / float(grid.nrColumns), 0.05f, 1.0f));
                     shader.setModel(grid.model(r, col));

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -101,6 +102,66 @@ TEST(Camera, GridCameraSeesTheWholeGrid) {
             EXPECT_LT(std::abs(p.y / p.w), 0.95f);
         }
     }
+}
+
+// ---- Frustum -------------------------------------------------------------------------------------
+
+// A 90-degree square frustum from the origin down -Z, near 1, far 10: its planes are |x| = -z,
+// |y| = -z, z = -1 and z = -10, so where a sphere stands is plain geometry.
+Frustum squareFrustum() {
+    return Frustum(glm::perspective(glm::radians(90.0f), 1.0f, 1.0f, 10.0f));
+}
+
+TEST(Frustum, SpheresAgainstTheKnownPlanes) {
+    const Frustum frustum = squareFrustum();
+    EXPECT_TRUE(frustum.mayContain({0, 0, -5}, 1));
+    // x = 7 at z = -5: 2 / sqrt(2) = 1.41 past the side plane x = -z, more than the radius
+    EXPECT_FALSE(frustum.mayContain({7, 0, -5}, 1));
+    EXPECT_FALSE(frustum.mayContain({0, -7, -5}, 1));
+    // x = 5.5: 0.35 past it, less than the radius: part of the sphere is inside
+    EXPECT_TRUE(frustum.mayContain({5.5f, 0, -5}, 1));
+    EXPECT_TRUE(frustum.mayContain({-5.5f, 0, -5}, 1));
+    EXPECT_FALSE(frustum.mayContain({0, 0, 2}, 1));       // behind the near plane
+    EXPECT_TRUE(frustum.mayContain({0, 0, -0.5f}, 1));     // straddling it
+    EXPECT_FALSE(frustum.mayContain({0, 0, -12}, 1));     // past the far plane
+    EXPECT_TRUE(frustum.mayContain({0, 0, -10.5f}, 1));   // straddling it
+}
+
+// Never a false "outside": of random spheres around a tilted camera, every one that mayContain
+// rejects has all of its surface points outside the clip volume (checked in double precision).
+TEST(Frustum, NeverRejectsASphereThatReachesTheView) {
+    const FlyCamera camera({1.0f, -2.0f, 6.0f}, -70.0f, 15.0f);
+    const glm::mat4 projectionView = camera.projectionMatrix(16.0f / 9.0f) * camera.viewMatrix();
+    const Frustum frustum(projectionView);
+    const glm::dmat4 clip(projectionView);
+    std::uint32_t state = 12345;
+    auto random = [&state](double low, double high) {
+        state = state * 1664525u + 1013904223u;
+        return low + (high - low) * double(state >> 8) / double(1u << 24);
+    };
+    int rejected = 0, kept = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const glm::vec3 centre(random(-30, 30), random(-30, 30), random(-30, 30));
+        const float radius = float(random(0.1, 4.0));
+        if (frustum.mayContain(centre, radius)) {
+            ++kept;
+            continue;
+        }
+        ++rejected;
+        for (int k = 0; k < 200; ++k) {
+            const double y = 1.0 - 2.0 * (k + 0.5) / 200.0, ring = std::sqrt(1.0 - y * y);
+            const double a = 2.399963229728653 * k;
+            const glm::dvec3 p = glm::dvec3(centre) + double(radius) * glm::dvec3(ring * std::cos(a), y,
+                                                                                ring * std::sin(a));
+            const glm::dvec4 c = clip * glm::dvec4(p, 1.0);
+            const bool inside = std::abs(c.x) <= c.w && std::abs(c.y) <= c.w && std::abs(c.z) <= c.w;
+            ASSERT_FALSE(inside) << "sphere " << i << " rejected, yet its point (" << p.x << ", "
+                                 << p.y << ", " << p.z << ") is in view";
+        }
+    }
+    // the camera sees a real part of the volume, and leaves most of it out
+    EXPECT_GT(kept, 100);
+    EXPECT_GT(rejected, 2000);
 }
 
 // ---- OrbitCamera -------------------------------------------------------------------------------
