@@ -9,6 +9,7 @@
 #include "image.h"
 #include "output.h"
 #include "paths.h"
+#include "web.h"
 
 namespace pbr {
 
@@ -102,9 +103,11 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     forgetCurrentProgram();  // a new context: no program of ours is current in it
 
     installDebugOutput();
+#ifndef PBR_WEBGL
     // Cube maps filter across face edges (GL 3.2 core): every IBL map relies on it, whether it
-    // was just computed or loaded from the cache.
+    // was just computed or loaded from the cache. (OpenGL ES 3 always does, with no switch.)
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+#endif
     const glm::ivec2 size = context_->windowed() ? context_->framebufferSize()
                                                  : glm::ivec2(options_.width, options_.height);
     target_ = std::make_unique<RenderTarget>(std::max(size.x, 1), std::max(size.y, 1),
@@ -325,6 +328,7 @@ void App::writeScreenshot(const std::string& path) {
     // A failed screenshot is reported and the window goes on.
     try {
         writePng(path, target_->readPixels());
+        web::handOver(path);
         std::printf("%s: screenshot %s (%s)\n", config_.name.c_str(),
                     absoluteForMessage(path).c_str(), frameDescription().c_str());
     } catch (const Error& e) {
@@ -353,6 +357,7 @@ void App::finish() {
     for (auto& [path, bytes] : outputFiles_) batch.add(path, std::move(bytes));
     outputFiles_.clear();
     batch.commit();
+    for (const fs::path& path : batch.paths()) web::handOver(path);
     if (!picture.empty()) {
         std::printf("%s: wrote %s (%s)\n", config_.name.c_str(),
                     absoluteForMessage(picture).c_str(), frameDescription().c_str());
@@ -375,6 +380,7 @@ void App::finish() {
     std::fflush(stdout);
 }
 
+#ifndef PBR_WEBGL
 void GLAD_API_PTR App::onDebugMessage(GLenum source, GLenum type, GLuint, GLenum severity, GLsizei,
                                       const GLchar* message, const void* user) {
     // The compiler's messages come back mapped to file:line through Shader; not here.
@@ -388,14 +394,18 @@ void GLAD_API_PTR App::onDebugMessage(GLenum source, GLenum type, GLuint, GLenum
         std::fprintf(stderr, "GL warning: %s\n", message);
     }
 }
+#endif
 
 void App::installDebugOutput() {
     // KHR_debug says where an error happened, as it happens; glGetError after each frame is the
-    // fallback (and catches what a driver does not report through the callback).
+    // fallback (and catches what a driver does not report through the callback). WebGL has no
+    // KHR_debug: glGetError alone, and the browser's console.
+#ifndef PBR_WEBGL
     if (!GLAD_GL_KHR_debug) return;
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(onDebugMessage, this);
+#endif
 }
 
 void App::checkGlErrors(const char* where) {

@@ -152,9 +152,11 @@ private:
     int debugErrorsSinceCheck_ = 0;  // errors KHR_debug reported since the last glGetError loop
     std::string firstGlError_;
 
+#ifndef PBR_WEBGL
     static void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
                                             GLsizei length, const GLchar* message,
                                             const void* user);
+#endif
 };
 
 }  // namespace pbr

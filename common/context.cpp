@@ -1,11 +1,15 @@
 #include "context.h"
 
 #include "error.h"
+#include "gl.h"
 
 namespace pbr {
 
 std::vector<std::string> offscreenBackends() {
     std::vector<std::string> backends;
+#ifdef PBR_WEBGL
+    backends.push_back("webgl");
+#endif
 #ifdef PBR_HAVE_OSMESA
     backends.push_back("osmesa");
 #endif
@@ -34,6 +38,9 @@ std::string builtInList() {
 std::unique_ptr<Context> createBackend(const std::string& backend, int width, int height,
                                        bool debug) {
     (void)width, (void)height, (void)debug;  // unused when no backend is built in
+#ifdef PBR_WEBGL
+    if (backend == "webgl") return createWebGlContext(width, height);
+#endif
 #ifdef PBR_HAVE_OSMESA
     if (backend == "osmesa") return createOsMesaContext(width, height);
 #endif

@@ -70,6 +70,8 @@ std::vector<std::string> softwareBackends();
 // The single backends (each throws Error with its reason).
 std::unique_ptr<Context> createOsMesaContext(int width, int height);
 std::unique_ptr<Context> createEglContext(int width, int height, bool softwareOnly, bool debug);
+// The browser build's only one, "webgl": the page's canvas, drawn into but never shown.
+std::unique_ptr<Context> createWebGlContext(int width, int height);
 
 // A GLFW window with a GL 3.3 core context (a debug context when `debug`). `captureCursor` hides
 // the cursor and keeps it in the window (the fly camera's mouse look); without it the cursor is

@@ -1,5 +1,10 @@
 // A window through GLFW 3.3: core profile 3.3 (forward-compatible on macOS), resizable, vsync.
 // Multisampling happens in the App's own framebuffer, so the window's needs none.
+//
+// In the browser build the same code drives emscripten's GLFW: the "window" is the page's
+// canvas with a WebGL 2 context, every swap waits for the browser's next animation frame, and
+// the same canvas serves the offscreen backend ("webgl": nothing shown, the frame handed to the
+// page; see createWebGlContext).
 #include "gl.h"  // glad provides the GL declarations; GLFW must not include its own
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -8,6 +13,7 @@
 
 #include "context.h"
 #include "error.h"
+#include "web.h"
 
 namespace pbr {
 
@@ -21,7 +27,8 @@ void onGlfwError(int, const char* description) {
 
 class GlfwContext final : public Context {
 public:
-    GlfwContext(GLFWwindow* window, bool captureCursor) : window_(window) {
+    GlfwContext(GLFWwindow* window, bool captureCursor, bool windowed = true)
+        : window_(window), windowed_(windowed) {
         glfwSetWindowUserPointer(window_, this);
         if (captureCursor) glfwSetInputMode(window_, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
         glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
@@ -43,8 +50,8 @@ public:
         glfwTerminate();
     }
 
-    bool windowed() const override { return true; }
-    std::string backend() const override { return "glfw"; }
+    bool windowed() const override { return windowed_; }
+    std::string backend() const override { return windowed_ ? "glfw" : "webgl"; }
     glm::ivec2 framebufferSize() const override {
         int width = 0, height = 0;
         glfwGetFramebufferSize(window_, &width, &height);
@@ -61,9 +68,14 @@ public:
         frame.quit = frame.quit || glfwWindowShouldClose(window_);
         return frame;
     }
-    void swapBuffers() override { glfwSwapBuffers(window_); }
+    void swapBuffers() override {
+        glfwSwapBuffers(window_);
+        web::waitForNextFrame();  // the browser shows the canvas, and input arrives
+    }
     double seconds() const override { return glfwGetTime(); }
-    void setVsync(bool on) override { glfwSwapInterval(on ? 1 : 0); }
+    void setVsync(bool on) override {
+        if (!kWebGl) glfwSwapInterval(on ? 1 : 0);  // a page always draws at the display's rate
+    }
 
 private:
     void onCursor(double x, double y) {
@@ -81,6 +93,7 @@ private:
     }
 
     GLFWwindow* window_;
+    bool windowed_;
     InputFrame pending_;
     bool haveCursor_ = false;
     double lastX_ = 0.0, lastY_ = 0.0;
@@ -88,22 +101,18 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, int height,
-                                           bool debug, bool captureCursor, std::string& whyNot) {
-    const char* x11 = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    if ((!x11 || !*x11) && (!wayland || !*wayland)) {
-        whyNot = "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
-        return nullptr;
-    }
+namespace {
+
+GLFWwindow* openWindow(const std::string& title, int width, int height, bool debug,
+                       std::string& whyNot) {
     glfwSetErrorCallback(onGlfwError);
     if (!glfwInit()) {
         whyNot = "GLFW cannot start: " + lastGlfwError;
         return nullptr;
     }
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, kWebGl ? 0 : 3);
+    if (!kWebGl) glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
 #ifdef __APPLE__
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
 #endif
@@ -112,18 +121,50 @@ std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, 
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!window) {
-        whyNot = "cannot open a GL 3.3 core window: " + lastGlfwError;
+        whyNot = std::string(kWebGl ? "cannot make a WebGL 2 context: " :
+                                      "cannot open a GL 3.3 core window: ") + lastGlfwError;
         glfwTerminate();
         return nullptr;
     }
     glfwMakeContextCurrent(window);
-    if (!gladLoadGL(glfwGetProcAddress)) {
+#ifdef PBR_WEBGL
+    const int loaded = gladLoadGLES2(glfwGetProcAddress);
+#else
+    const int loaded = gladLoadGL(glfwGetProcAddress);
+#endif
+    if (!loaded) {
         glfwDestroyWindow(window);
         glfwTerminate();
-        throw Error("glfw: cannot load the OpenGL functions (gladLoadGL failed)");
+        throw Error("glfw: cannot load the OpenGL functions (glad found no GL)");
     }
-    glfwSwapInterval(1);
+    if (!kWebGl) glfwSwapInterval(1);
+    return window;
+}
+
+}  // namespace
+
+std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, int height,
+                                           bool debug, bool captureCursor, std::string& whyNot) {
+    if (!kWebGl) {  // a page always has its canvas
+        const char* x11 = std::getenv("DISPLAY");
+        const char* wayland = std::getenv("WAYLAND_DISPLAY");
+        if ((!x11 || !*x11) && (!wayland || !*wayland)) {
+            whyNot = "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
+            return nullptr;
+        }
+    }
+    GLFWwindow* window = openWindow(title, width, height, debug, whyNot);
+    if (!window) return nullptr;
     return std::make_unique<GlfwContext>(window, captureCursor);
 }
+
+#ifdef PBR_WEBGL
+std::unique_ptr<Context> createWebGlContext(int width, int height) {
+    std::string whyNot;
+    GLFWwindow* window = openWindow("", width, height, false, whyNot);
+    if (!window) throw Error("webgl: " + whyNot);
+    return std::make_unique<GlfwContext>(window, false, false);
+}
+#endif
 
 }  // namespace pbr

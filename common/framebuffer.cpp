@@ -7,6 +7,16 @@
 namespace pbr {
 
 namespace {
+// GL 3.3 turns sRGB encoding on and off (GL_FRAMEBUFFER_SRGB); OpenGL ES always encodes into an
+// sRGB target, so there is nothing to switch (and no web sample draws into one).
+void srgbEncoding(bool on) {
+#ifdef PBR_WEBGL
+    (void)on;
+#else
+    (on ? glEnable : glDisable)(GL_FRAMEBUFFER_SRGB);
+#endif
+}
+
 std::string statusName(GLenum status) {
     switch (status) {
         case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT:
@@ -64,11 +74,11 @@ RenderTarget::RenderTarget(int width, int height, int samples, bool srgb)
 void RenderTarget::bind() const {
     glBindFramebuffer(GL_FRAMEBUFFER, samples_ > 0 ? multisampled_.id() : resolved_.id());
     glViewport(0, 0, width_, height_);
-    if (srgb_) glEnable(GL_FRAMEBUFFER_SRGB);  // on only while an sRGB target is drawn into
+    if (srgb_) srgbEncoding(true);  // on only while an sRGB target is drawn into
 }
 
 void RenderTarget::resolve() const {
-    if (srgb_) glDisable(GL_FRAMEBUFFER_SRGB);  // the stored bytes, as they are
+    if (srgb_) srgbEncoding(false);  // the stored bytes, as they are
     if (samples_ == 0) return;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_.id());
@@ -77,19 +87,24 @@ void RenderTarget::resolve() const {
 }
 
 void RenderTarget::blitToDefault(int width, int height) const {
-    if (srgb_) glDisable(GL_FRAMEBUFFER_SRGB);
+    if (srgb_) srgbEncoding(false);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glBlitFramebuffer(0, 0, width_, height_, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 Image RenderTarget::readPixels() const {
-    Image image{width_, height_, 3, {}};
-    image.pixels.resize(size_t(width_) * size_t(height_) * 3);
-    if (srgb_) glDisable(GL_FRAMEBUFFER_SRGB);
+    // Read as RGBA, the one format every GL (OpenGL ES included) reads an RGBA8 buffer in.
+    std::vector<std::uint8_t> rgba(size_t(width_) * size_t(height_) * 4);
+    if (srgb_) srgbEncoding(false);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, image.pixels.data());
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    Image image{width_, height_, 3, {}};
+    image.pixels.reserve(size_t(width_) * size_t(height_) * 3);
+    for (size_t i = 0; i < rgba.size(); i += 4) {
+        image.pixels.insert(image.pixels.end(), &rgba[i], &rgba[i] + 3);
+    }
     return flipRows(image);  // GL's rows are bottom-up, PNG's top-down
 }
 

@@ -97,6 +97,36 @@ SavedGlState::~SavedGlState() {
     glActiveTexture(GLenum(activeTexture_));
 }
 
+GLenum pixelFormatOf(GLenum internalFormat) {
+    switch (internalFormat) {
+        case GL_R8:
+            return GL_RED;
+        case GL_RG8:
+        case GL_RG16F:
+            return GL_RG;
+        case GL_RGB8:
+        case GL_SRGB8:
+        case GL_RGB16F:
+        case GL_RGB32F:
+            return GL_RGB;
+        default:
+            return GL_RGBA;
+    }
+}
+
+int channelsOf(GLenum internalFormat) {
+    switch (pixelFormatOf(internalFormat)) {
+        case GL_RED:
+            return 1;
+        case GL_RG:
+            return 2;
+        case GL_RGB:
+            return 3;
+        default:
+            return 4;
+    }
+}
+
 std::string glErrorName(GLenum error) {
     switch (error) {
         case GL_INVALID_ENUM:

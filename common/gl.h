@@ -1,12 +1,38 @@
 #pragma once
 // The OpenGL loader (glad 2, generated at configure time) and move-only owners for GL objects.
 // No sample calls glGen*/glDelete* by hand: it holds one of these and the destructor deletes.
+//
+// PBR_WEBGL is the one switch between the two GLs the suite runs on: desktop OpenGL 3.3 core,
+// and WebGL 2 (OpenGL ES 3.0) in the browser build (cmake/Web.cmake). Only common/ looks at it;
+// what WebGL 2 lacks (glGetTexImage, KHR_debug, seamless-cube and sRGB-framebuffer switches, RGB
+// float render targets) is handled beside each use.
+#ifdef __EMSCRIPTEN__
+#define PBR_WEBGL 1
+#include <glad/gles2.h>
+#else
 #include <glad/gl.h>
+#endif
 
 #include <string>
 #include <utility>
 
 namespace pbr {
+
+#ifdef PBR_WEBGL
+inline constexpr bool kWebGl = true;
+#else
+inline constexpr bool kWebGl = false;
+#endif
+
+// The float formats of the IBL maps' render targets: RGB on desktop GL; RGBA on WebGL 2, where
+// the RGB float formats cannot be rendered into (nor their mip chains made).
+inline constexpr GLenum kHalfFloatRgb = kWebGl ? GL_RGBA16F : GL_RGB16F;
+inline constexpr GLenum kFloatRgb = kWebGl ? GL_RGBA32F : GL_RGB32F;
+
+// The format (GL_RED, GL_RG, GL_RGB, GL_RGBA) that goes with an internal format in uploads and
+// read-backs (OpenGL ES requires the match), and how many channels that is.
+GLenum pixelFormatOf(GLenum internalFormat);
+int channelsOf(GLenum internalFormat);
 
 // The GL objects alive in the current context, found by asking GL about every name up to a
 // bound (glIsTexture, glIsBuffer, ...): independent of how they were made, so a leak through a

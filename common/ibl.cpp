@@ -63,7 +63,7 @@ TextureCube equirectangularToCubemap(const Texture2D& equirectangular, int size)
     const int levels = int(std::floor(std::log2(double(size)))) + 1;
     // The cube keeps the source's range: 32-bit floats for a sun past half-float range.
     TextureCube cube(size, levels,
-                     equirectangular.internalFormat() == GL_RGB32F ? GL_RGB32F : GL_RGB16F);
+                     equirectangular.internalFormat() == GL_RGB32F ? kFloatRgb : kHalfFloatRgb);
     Shader shader("ibl/cubemap.vert", "ibl/equirect_to_cube.frag");
     shader.set("equirectangularMap", 0);
     equirectangular.bind(0);
@@ -102,8 +102,6 @@ SplitEnvironment splitBrightTexels(const TextureCube& environment, int restSize)
     SplitEnvironment split{.rest = TextureCube(n, int(std::floor(std::log2(double(n)))) + 1,
                                                environment.internalFormat()),
                            .bright = {}};
-    split.rest.bind(0);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (int face = 0; face < 6; ++face) {
         std::vector<float>& rgb = faces[size_t(face)];
         for (int j = 0; j < n; ++j) {
@@ -126,9 +124,9 @@ SplitEnvironment splitBrightTexels(const TextureCube& environment, int restSize)
                                         .radiance = radiance});
             }
         }
-        glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), 0, 0, 0, n, n, GL_RGB,
-                        GL_FLOAT, rgb.data());
+        split.rest.writeFace(face, 0, rgb);
     }
+    split.rest.bind(0);
     glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
     return split;
 }

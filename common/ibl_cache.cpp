@@ -83,6 +83,8 @@ fs::path environmentFile(const Options& options) {
 }
 
 std::optional<fs::path> cacheDir(const Options& options) {
+    // A page's files live as long as the page: the browser build computes its maps every time.
+    if (kWebGl) return std::nullopt;
     return options.has("--no-cache") ? std::nullopt : defaultCacheDir();
 }
 

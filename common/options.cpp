@@ -1,9 +1,13 @@
 #include "options.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
+#include <type_traits>
 
 #include "error.h"
 #include "paths.h"
@@ -48,13 +52,43 @@ constexpr size_t kFlagColumn = 30;  // where the help starts; a longer flag puts
     throw UsageError(message, "");
 }
 
+#if !defined(__cpp_lib_to_chars)
+// A standard library without floating-point from_chars (emscripten's libc++ 13): strtod, held to
+// what from_chars takes (no leading space or '+', no hexadecimal).
+bool parseFloating(const std::string& text, double& out, std::errc& error) {
+    error = std::errc::invalid_argument;
+    if (text.empty() || text.front() == '+' || std::isspace(static_cast<unsigned char>(text.front())) ||
+        text.find_first_of("xX") != std::string::npos) {
+        return false;
+    }
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size()) return false;
+    if (errno == ERANGE && std::isinf(value)) {
+        error = std::errc::result_out_of_range;
+        return false;
+    }
+    error = std::errc();
+    out = value;
+    return true;
+}
+#endif
+
 template <class T>
 bool parseNumber(const std::string& text, T& out, std::errc& error) {
-    const char* begin = text.data();
-    const char* end = begin + text.size();
-    auto [ptr, ec] = std::from_chars(begin, end, out);
-    error = ec;
-    return ec == std::errc() && ptr == end;
+#if !defined(__cpp_lib_to_chars)
+    if constexpr (std::is_floating_point_v<T>) {
+        return parseFloating(text, out, error);
+    } else
+#endif
+    {
+        const char* begin = text.data();
+        const char* end = begin + text.size();
+        auto [ptr, ec] = std::from_chars(begin, end, out);
+        error = ec;
+        return ec == std::errc() && ptr == end;
+    }
 }
 
 std::string formatNumber(double value) {

@@ -130,6 +130,27 @@ ShaderSource preprocessShader(const fs::path& file, const fs::path& includeDir) 
     return std::move(preprocessor.out);
 }
 
+std::string toGlslEs(const std::string& text, const fs::path& file) {
+    constexpr std::string_view kDesktop = "#version 330 core";
+    const size_t end = text.find('\n');
+    std::string_view first = std::string_view(text).substr(0, end);
+    if (!first.empty() && first.back() == '\r') first.remove_suffix(1);
+    if (first != kDesktop) {
+        throw Error(displayPath(file) + ":1: the first line must be '" + std::string(kDesktop) +
+                    "' (the browser build turns it into '#version 300 es')");
+    }
+    // highp everywhere: the IBL sums and the BRDF need float precision, and WebGL 2's fragment
+    // shaders have no default for floats (samplers default to lowp). "#line 2" keeps the
+    // numbering of the file's own lines.
+    return "#version 300 es\n"
+           "precision highp float;\n"
+           "precision highp int;\n"
+           "precision highp sampler2D;\n"
+           "precision highp samplerCube;\n"
+           "#line 2\n" +
+           (end == std::string::npos ? std::string() : text.substr(end + 1));
+}
+
 std::vector<std::string> mapShaderLog(const std::string& log, const std::vector<fs::path>& files) {
     std::vector<std::string> mapped;
     std::istringstream lines(log);
@@ -142,7 +163,15 @@ std::vector<std::string> mapShaderLog(const std::string& log, const std::vector<
         scan.skipSpaces();
         long source = 0, encoded = 0, column = 0;
         bool parsed = false;
-        if (scan.number(source)) {
+        std::string severity;
+        for (const char* word : {"ERROR: ", "WARNING: "}) {  // ANGLE: "ERROR: 0:12: message"
+            if (scan.eat(word)) {
+                severity = word[0] == 'E' ? "error: " : "warning: ";
+                parsed = scan.number(source) && scan.eat(":") && scan.number(encoded) &&
+                         scan.eat(":");
+            }
+        }
+        if (severity.empty() && scan.number(source)) {
             if (scan.eat(":")) {
                 parsed =
                     scan.number(encoded) && scan.eat("(") && scan.number(column) && scan.eat("):");
@@ -159,7 +188,7 @@ std::vector<std::string> mapShaderLog(const std::string& log, const std::vector<
         scan.skipSpaces();
         const size_t id = size_t(encoded / kLinesPerFile);
         const std::string file = id < files.size() ? displayPath(files[id]) : "<unknown file>";
-        mapped.push_back(file + ":" + std::to_string(encoded % kLinesPerFile) + ": " +
+        mapped.push_back(file + ":" + std::to_string(encoded % kLinesPerFile) + ": " + severity +
                          std::string(scan.rest));
     }
     return mapped;
@@ -173,8 +202,9 @@ fs::path resolveShaderPath(const fs::path& path) {
 
 GLuint compileStage(GLenum stage, const fs::path& path) {
     const ShaderSource source = preprocessShader(path, shaderDir() / "include");
+    const std::string code = kWebGl ? toGlslEs(source.text, path) : source.text;
     const GLuint shader = glCreateShader(stage);
-    const char* text = source.text.c_str();
+    const char* text = code.c_str();
     glShaderSource(shader, 1, &text, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;

@@ -28,8 +28,15 @@ struct ShaderSource {
 ShaderSource preprocessShader(const std::filesystem::path& file,
                               const std::filesystem::path& includeDir);
 
+// The shader for WebGL 2: `#version 330 core` (the first line of every shader of the suite)
+// becomes `#version 300 es` with highp precision for floats, ints and samplers, and nothing else
+// changes (the line numbers stay the file's). Throws Error("<file>:1: ...") for any other first
+// line. Pure: the browser build uses it, the native tests check it.
+std::string toGlslEs(const std::string& text, const std::filesystem::path& file);
+
 // Rewrites a driver's info log ("0:12(5): error: ..." from Mesa, "0(12) : error ..." from
-// NVIDIA) into "<file>:<line>: error: ..." lines of the original files.
+// NVIDIA, "ERROR: 0:12: ..." from ANGLE, the browsers' GLSL compiler) into
+// "<file>:<line>: error: ..." lines of the original files.
 std::vector<std::string> mapShaderLog(const std::string& log,
                                       const std::vector<std::filesystem::path>& files);
 

@@ -5,23 +5,55 @@
 #include <cstring>
 
 #include "error.h"
+#include "framebuffer.h"
 #include "material_folder.h"
 #include "paths.h"
 
 namespace pbr {
 
 namespace {
-// GL 3.3 has sRGB formats for RGB and RGBA only: grey (and grey + alpha) become RGB (RGBA).
-Image widenGrey(const Image& image) {
-    if (image.channels > 2) return image;
-    Image wide{image.width, image.height, image.channels + 2, {}};
+// GL 3.3 has sRGB formats for RGB and RGBA only: grey (and grey + alpha) become RGB (RGBA). On
+// WebGL 2 RGB becomes RGBA too: SRGB8 cannot be rendered into, so its mip chain cannot be made.
+Image widenForSrgb(const Image& image) {
+    if (image.channels == 4 || (image.channels == 3 && !kWebGl)) return image;
+    const bool alpha = image.channels == 2 || image.channels == 4 || kWebGl;
+    Image wide{image.width, image.height, alpha ? 4 : 3, {}};
     wide.pixels.reserve(size_t(image.width) * size_t(image.height) * size_t(wide.channels));
     for (size_t i = 0; i < image.pixels.size(); i += size_t(image.channels)) {
-        wide.pixels.insert(wide.pixels.end(), 3, image.pixels[i]);
+        if (image.channels >= 3) {
+            wide.pixels.insert(wide.pixels.end(), &image.pixels[i], &image.pixels[i] + 3);
+        } else {
+            wide.pixels.insert(wide.pixels.end(), 3, image.pixels[i]);
+        }
         if (image.channels == 2) wide.pixels.push_back(image.pixels[i + 1]);
+        else if (alpha) wide.pixels.push_back(255);
     }
     return wide;
 }
+
+#ifdef PBR_WEBGL
+// WebGL 2 has no glGetTexImage: the level is attached to a framebuffer of its own and read back
+// as RGBA floats (float colour buffers are readable with EXT_color_buffer_float).
+std::vector<float> readLevelRgba(GLenum target, GLuint texture, int level, int width,
+                                 int height) {
+    const SavedGlState saved;
+    const GlFramebuffer framebuffer;
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, texture, level);
+    requireCompleteFramebuffer("texture read-back");
+    std::vector<float> rgba(size_t(width) * size_t(height) * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+    return rgba;
+}
+
+std::vector<float> firstChannels(const std::vector<float>& rgba, int channels) {
+    std::vector<float> out;
+    out.reserve(rgba.size() / 4 * size_t(channels));
+    for (size_t i = 0; i < rgba.size(); i += 4) out.insert(out.end(), &rgba[i], &rgba[i] + channels);
+    return out;
+}
+#endif
 }  // namespace
 
 Texture2D::Texture2D(const Image& source, ColorSpace colorSpace, TextureFilter filter)
@@ -31,7 +63,7 @@ Texture2D::Texture2D(const Image& source, ColorSpace colorSpace, TextureFilter f
     if (source.channels < 1 || source.channels > 4) {
         throw Error("Texture2D: unsupported channel count");
     }
-    const Image image = colorSpace == ColorSpace::Srgb ? widenGrey(source) : source;
+    const Image image = colorSpace == ColorSpace::Srgb ? widenForSrgb(source) : source;
     const GLenum format = kFormats[image.channels - 1];
     GLenum internalFormat = kLinear[image.channels - 1];
     if (colorSpace == ColorSpace::Srgb) {
@@ -71,8 +103,8 @@ Texture2D::Texture2D(const HdrImage& image)
 Texture2D::Texture2D(int width, int height, GLenum internalFormat)
     : width_(width), height_(height), internalFormat_(internalFormat) {
     glBindTexture(GL_TEXTURE_2D, texture_.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), width, height, 0, GL_RGBA, GL_FLOAT,
-                 nullptr);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), width, height, 0,
+                 pixelFormatOf(internalFormat), GL_FLOAT, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
@@ -81,11 +113,16 @@ Texture2D::Texture2D(int width, int height, GLenum internalFormat)
 
 std::vector<float> Texture2D::readFloats(int channels) const {
     static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+#ifdef PBR_WEBGL
+    (void)kFormats;
+    return firstChannels(readLevelRgba(GL_TEXTURE_2D, texture_.id(), 0, width_, height_), channels);
+#else
     std::vector<float> texels(size_t(width_) * size_t(height_) * size_t(channels));
     glBindTexture(GL_TEXTURE_2D, texture_.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTexImage(GL_TEXTURE_2D, 0, kFormats[channels - 1], GL_FLOAT, texels.data());
     return texels;
+#endif
 }
 
 TextureCube::TextureCube(int size, int levels, GLenum internalFormat)
@@ -95,7 +132,8 @@ TextureCube::TextureCube(int size, int levels, GLenum internalFormat)
         const int s = std::max(1, size >> level);
         for (int face = 0; face < 6; ++face) {
             glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level,
-                         GLint(internalFormat), s, s, 0, GL_RGB, GL_FLOAT, nullptr);
+                         GLint(internalFormat), s, s, 0, pixelFormatOf(internalFormat), GL_FLOAT,
+                         nullptr);
         }
     }
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -114,12 +152,32 @@ void TextureCube::bind(int unit) const {
 
 std::vector<float> TextureCube::readFace(int face, int level) const {
     const int s = std::max(1, size_ >> level);
+#ifdef PBR_WEBGL
+    return firstChannels(
+        readLevelRgba(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), texture_.id(), level, s, s), 3);
+#else
     std::vector<float> texels(size_t(s) * size_t(s) * 3);
     glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, GL_RGB, GL_FLOAT,
                   texels.data());
     return texels;
+#endif
+}
+
+void TextureCube::writeFace(int face, int level, const std::vector<float>& rgb) {
+    const int s = std::max(1, size_ >> level);
+    if (rgb.size() != size_t(s) * size_t(s) * 3) throw Error("TextureCube::writeFace: wrong size");
+    std::vector<float> rgba;
+    if (pixelFormatOf(internalFormat_) == GL_RGBA) {  // OpenGL ES uploads in the texture's format
+        rgba.reserve(rgb.size() / 3 * 4);
+        for (size_t i = 0; i < rgb.size(); i += 3)
+            rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 1.0f});
+    }
+    bind(0);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, 0, 0, s, s,
+                    rgba.empty() ? GL_RGB : GL_RGBA, GL_FLOAT, rgba.empty() ? rgb.data() : rgba.data());
 }
 
 namespace {
@@ -174,7 +232,7 @@ Texture2D Texture2D::fromKtx(const KtxImage& image) {
 }
 
 KtxImage TextureCube::toKtx() const {
-    const bool wide = internalFormat_ == GL_RGB32F;
+    const bool wide = internalFormat_ == kFloatRgb;
     KtxImage image{.format = wide ? KtxFormat::RGBA32F : KtxFormat::RGBA16F,
                    .width = size_,
                    .height = size_,
@@ -203,7 +261,7 @@ TextureCube TextureCube::fromKtx(const KtxImage& image) {
     if (image.levels > expectedLevels) throw Error("more mip levels than the size allows");
     const GlPixelFormat gl = glPixelFormat(image.format);
     TextureCube cube(image.width, image.levels,
-                     image.format == KtxFormat::RGBA32F ? GL_RGB32F : GL_RGB16F);
+                     image.format == KtxFormat::RGBA32F ? kFloatRgb : kHalfFloatRgb);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     for (int level = 0; level < image.levels; ++level) {
         const int s = std::max(1, image.width >> level);

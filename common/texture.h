@@ -55,13 +55,16 @@ private:
 // what an ordinary environment needs; GL_RGB32F one whose sun goes past half-float range.
 class TextureCube {
 public:
-    TextureCube(int size, int levels, GLenum internalFormat = GL_RGB16F);
+    TextureCube(int size, int levels, GLenum internalFormat = kHalfFloatRgb);
     void bind(int unit) const;
     int size() const { return size_; }
     int levels() const { return levels_; }
     GLuint id() const { return texture_.id(); }
     // The texels of one face at one level, RGB floats, row 0 at the face's t = 0.
     std::vector<float> readFace(int face, int level) const;
+    // Replaces one face of one level with RGB floats (size^2 x 3, row 0 at t = 0); binds the
+    // cube to unit 0.
+    void writeFace(int face, int level, const std::vector<float>& rgb);
     GLenum internalFormat() const { return internalFormat_; }
     // Every face and level as RGBA16F (RGBA32F for a GL_RGB32F cube; alpha 1), and back (RGB16F,
     // RGBA16F or RGBA32F, square faces, a mip chain of halving sizes). fromKtx throws Error for

@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "error.h"
+#include "paths.h"
 #include "shader.h"
 
 namespace pbr {
@@ -102,8 +103,49 @@ TEST(ShaderLog, MesaAndNvidiaMessagesMapToFileAndLine) {
     const auto nvidia = mapShaderLog("0(10042) : error C1008: undefined variable \"b\"\n", files);
     ASSERT_EQ(nvidia.size(), 1u);
     EXPECT_EQ(nvidia[0], "/s/include/brdf.glsl:42: error C1008: undefined variable \"b\"");
+    // ANGLE, the browsers' compiler (what a WebGL page reports)
+    const auto angle = mapShaderLog(
+        "ERROR: 0:10009: 'roughnes' : undeclared identifier\n"
+        "WARNING: 0:3: 'x' : unused\n",
+        files);
+    ASSERT_EQ(angle.size(), 2u);
+    EXPECT_EQ(angle[0], "/s/include/brdf.glsl:9: error: 'roughnes' : undeclared identifier");
+    EXPECT_EQ(angle[1], "/s/main.frag:3: warning: 'x' : unused");
     // Lines it does not understand pass through unchanged.
     EXPECT_EQ(mapShaderLog("something else\n", files).at(0), "something else");
+    EXPECT_EQ(mapShaderLog("ERROR: nothing to map\n", files).at(0), "ERROR: nothing to map");
+}
+
+// The browser build's rewrite: only the first line changes into the ES version and precision
+// statements, and the file's next line is still numbered 2, so messages keep their lines.
+TEST(ShaderEs, VersionLineBecomesEsWithPrecisionAndTheLinesKeepTheirNumbers) {
+    const std::string desktop = "#version 330 core\nout vec4 FragColor;\n#line 10001\nx\n";
+    const std::string es = toGlslEs(desktop, "a.frag");
+    EXPECT_EQ(es,
+              "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+              "precision highp sampler2D;\nprecision highp samplerCube;\n#line 2\n"
+              "out vec4 FragColor;\n#line 10001\nx\n");
+    EXPECT_EQ(toGlslEs("#version 330 core\r\nx\n", "a.frag").substr(0, 16), "#version 300 es\n");
+    try {
+        toGlslEs("#version 410 core\nx\n", "shaders/a.frag");
+        FAIL() << "another version was taken";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("a.frag:1: the first line must be '#version 330 core'"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+// Every shader of the suite starts the way the rewrite expects.
+TEST(ShaderEs, EveryShaderOfTheSuiteCanBeRewritten) {
+    int count = 0;
+    for (const auto& entry : fs::recursive_directory_iterator(PBR_SOURCE_SHADER_DIR)) {
+        const std::string extension = entry.path().extension().string();
+        if (extension != ".vert" && extension != ".frag") continue;
+        EXPECT_NO_THROW(toGlslEs(readTextFile(entry.path()), entry.path())) << entry.path();
+        ++count;
+    }
+    EXPECT_GT(count, 20);
 }
 
 }  // namespace

@@ -1,0 +1,35 @@
+#include "web.h"
+
+#ifdef PBR_WEBGL
+#include <emscripten.h>
+
+#include <string>
+
+#include "paths.h"
+
+// JavaScript of the page: Module.pbrHandOver (web/shell.html) turns the bytes into a link and
+// into text a test can read.
+EM_JS(void, pbr_hand_over, (const char* name, const unsigned char* bytes, int size), {
+    const data = HEAPU8.slice(bytes, bytes + size);
+    if (Module["pbrHandOver"]) Module["pbrHandOver"](UTF8ToString(name), data);
+});
+
+// An import the build marks as one that suspends the wasm (-sASYNCIFY_IMPORTS).
+EM_ASYNC_JS(void, pbr_wait_for_animation_frame, (), {
+    await new Promise(function(resolve) { requestAnimationFrame(function() { resolve(); }); });
+});
+
+namespace pbr::web {
+
+void handOver(const std::filesystem::path& path) {
+    const std::string bytes = readTextFile(path);
+    pbr_hand_over(path.filename().string().c_str(),
+                  reinterpret_cast<const unsigned char*>(bytes.data()), int(bytes.size()));
+}
+
+void waitForNextFrame() {
+    pbr_wait_for_animation_frame();
+}
+
+}  // namespace pbr::web
+#endif
