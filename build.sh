@@ -3,7 +3,11 @@
 #   ./build.sh run [flags]   install what is missing, build, run sample 01 (a window when there is
 #                            a display, otherwise an offscreen PNG whose path it prints)
 #   ./build.sh test          install what is missing, build, run every test through ctest: in the
-#                            Release build, then again in the AddressSanitizer + UBSan build
+#                            Release build (the web samples in headless Chromium included), then
+#                            again in the AddressSanitizer + UBSan build
+# and one more:
+#   ./build.sh web           install what is missing, build the samples for the browser into
+#                            build/web (open build/web/index.html)
 set -euo pipefail
 
 usage() {
@@ -11,7 +15,10 @@ usage() {
 usage: ./build.sh run [sample flags]   install what is missing, build, run sample 01: a window
                                        when there is a display, else an offscreen PNG and its path
        ./build.sh test                 install what is missing, build, run every test (Release,
-                                       then AddressSanitizer + UBSan)
+                                       the web samples in headless Chromium, then
+                                       AddressSanitizer + UBSan)
+       ./build.sh web                  install what is missing (emscripten, Chromium), build the
+                                       web samples into build/web: open build/web/index.html
        ./build.sh -h | --help          this help
 Flags after "run" go to the sample (./build.sh run --help lists them); relative paths in them
 are taken from the folder you run build.sh in.
@@ -20,12 +27,12 @@ USAGE
 
 case "${1:-}" in
     -h | --help) usage; exit 0 ;;
-    run | test) ;;
-    "") usage >&2; echo "build.sh: error: say run or test" >&2; exit 2 ;;
+    run | test | web) ;;
+    "") usage >&2; echo "build.sh: error: say run, test or web" >&2; exit 2 ;;
     *) usage >&2; echo "build.sh: error: unknown argument '$1'" >&2; exit 2 ;;
 esac
-if [ "$1" = test ] && [ $# -gt 1 ]; then
-    usage >&2; echo "build.sh: error: test takes no arguments ('$2')" >&2; exit 2
+if [ "$1" != run ] && [ $# -gt 1 ]; then
+    usage >&2; echo "build.sh: error: $1 takes no arguments ('$2')" >&2; exit 2
 fi
 
 caller_dir="$PWD"  # the sample runs here, so its relative paths mean what the caller meant
@@ -37,6 +44,9 @@ PACKAGES=(cmake g++ make pkg-config libglfw3-dev python3-glad libglm-dev libstb-
 # OSMesa is gone from Mesa 25.1 on; where the distribution still has it, it is the first
 # headless backend (always software, so it matches the goldens). EGL does without it.
 OPTIONAL_PACKAGES=(libosmesa6-dev)
+# The web build and its tests: emscripten (its GLFW and libc++ are built in; nothing is
+# downloaded) and a headless Chromium with a software WebGL 2 (SwiftShader). About 1.1 GB.
+WEB_PACKAGES=(emscripten chromium-headless-shell)
 
 is_installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 
@@ -75,6 +85,45 @@ install_missing() {
         echo "build.sh: could not install: ${missing[*]}" >&2
         exit 1
     fi
+}
+
+# The web build's packages (see WEB_PACKAGES). Returns 1, saying why, where they cannot be had.
+install_web() {
+    if ! command -v dpkg-query >/dev/null 2>&1; then
+        if command -v em++ >/dev/null 2>&1 &&
+           { command -v chromium-headless-shell || command -v chromium; } >/dev/null 2>&1; then
+            return 0
+        fi
+        echo "build.sh: not a Debian system and no em++ or Chromium on PATH: no web build" >&2
+        return 1
+    fi
+    local missing=() p
+    for p in "${WEB_PACKAGES[@]}"; do is_installed "$p" || missing+=("$p"); done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    local apt=(env DEBIAN_FRONTEND=noninteractive apt-get)
+    if [ "$(id -u)" -ne 0 ]; then
+        if ! command -v sudo >/dev/null 2>&1; then
+            echo "build.sh: not root and no sudo; as root run: apt-get install --no-install-recommends ${missing[*]}" >&2
+            return 1
+        fi
+        apt=(sudo env DEBIAN_FRONTEND=noninteractive apt-get)
+    fi
+    echo "build.sh: installing ${missing[*]} (the web build)" >&2
+    if ! "${apt[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
+        "${apt[@]}" update -q || true
+        if ! "${apt[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
+            echo "build.sh: could not install: ${missing[*]}" >&2
+            return 1
+        fi
+    fi
+}
+
+# The samples for the browser (cmake/Web.cmake), into build/web, with the assets the Release
+# build baked.
+build_web() {
+    emcmake cmake -S . -B build/web -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON \
+          -DPBR_BAKED_RESOURCES="$repo_dir/build/release/resources" >/dev/null
+    cmake --build build/web -j "$(nproc)"
 }
 
 # Khronos' glTF validator, for the test of our own glTF asset; skipped (and the test says so)
@@ -128,10 +177,31 @@ case "${1:-}" in
         cd "$caller_dir"
         exec "$repo_dir/build/release/bin/01_lighting" "$@"
         ;;
+    web)
+        install_missing
+        install_web || exit 1
+        build default
+        build_web
+        echo "build.sh: the web samples are in $repo_dir/build/web: open index.html there, or" \
+             "serve the folder (python3 -m http.server -d build/web) and open http://localhost:8000" >&2
+        ;;
     test)
         timed "install" install_missing
         timed "glTF validator" install_gltf_validator
         timed "Release build" build default
+        # The web tests are skipped, saying so, only where the web build cannot be made at all;
+        # on Debian a failed install fails the command (CI never skips them).
+        web_status=0
+        start=$SECONDS
+        install_web || web_status=$?
+        stage_times+=" web install $((SECONDS - start)),"
+        if [ "$web_status" -eq 0 ]; then
+            timed "web build" build_web
+        elif command -v dpkg-query >/dev/null 2>&1; then
+            exit 1
+        else
+            echo "build.sh: no web build here: the web tests will be skipped" >&2
+        fi
         timed "Release tests" ctest --preset default -j "$(nproc)"
         echo "build.sh: the same tests under AddressSanitizer + UndefinedBehaviorSanitizer" >&2
         timed "sanitizer build" build asan

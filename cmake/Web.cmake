@@ -14,6 +14,13 @@ endif()
 set(PBR_BUILD_TESTS OFF)
 set(PBR_BUILD_TOOLS OFF)
 
+# emscripten runs node scripts when it links (acorn, from Debian's node-acorn in
+# /usr/share/nodejs); a node that does not search there by itself is told to.
+if(EXISTS /usr/share/nodejs AND NOT DEFINED ENV{NODE_PATH})
+    set(CMAKE_C_LINKER_LAUNCHER "${CMAKE_COMMAND}" -E env NODE_PATH=/usr/share/nodejs)
+    set(CMAKE_CXX_LINKER_LAUNCHER "${CMAKE_COMMAND}" -E env NODE_PATH=/usr/share/nodejs)
+endif()
+
 # JavaScript-side C++ exceptions (emscripten's default is to abort on a throw): the error policy
 # (one line, an exit code, every destructor run) holds in the page too.
 add_compile_options(-fexceptions)

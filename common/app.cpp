@@ -148,6 +148,8 @@ void App::useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax)
 }
 
 App::~App() {
+    // An App is the run: ending by an exception is a failure (exit code 1), else a success.
+    web::exitWithAfterMain(std::uncaught_exceptions() > 0 ? 1 : 0);
     shaders_.clear();
     target_.reset();
     // Everything a sample made was declared after the App and is gone by now: whatever GL still
@@ -295,7 +297,7 @@ void App::endFrame() {
     if (options_.benchmark) {
         // Whole frames, end to end: the GPU's work (glFinish), the blit to the window and the
         // swap included, as a frame counter on screen would see them.
-        glFinish();
+        finishGl();
         const double now = context_->seconds();
         if (frameIndex_ == 0) {
             firstFrameSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() -

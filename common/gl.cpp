@@ -127,6 +127,18 @@ int channelsOf(GLenum internalFormat) {
     }
 }
 
+void finishGl() {
+    glFinish();
+    if (kWebGl) {
+        GLint read = 0;
+        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        GLubyte pixel[4];
+        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read));
+    }
+}
+
 std::string glErrorName(GLenum error) {
     switch (error) {
         case GL_INVALID_ENUM:

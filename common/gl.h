@@ -105,6 +105,10 @@ using GlRenderbuffer = GlObject<detail::NamedKind<glGenRenderbuffers, glDeleteRe
 using GlSampler = GlObject<detail::NamedKind<glGenSamplers, glDeleteSamplers>>;
 using GlProgram = GlObject<detail::ProgramKind>;
 
+// Returns once the GL has done all the work given to it: glFinish, and in a browser (whose
+// glFinish waits for nothing) a pixel read back as well, for the timings of --benchmark.
+void finishGl();
+
 // "GL_INVALID_OPERATION" for 0x0502, and so on.
 std::string glErrorName(GLenum error);
 

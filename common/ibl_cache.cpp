@@ -142,7 +142,7 @@ template <typename T>
 T IblCache::timed(const std::function<T()>& compute) {
     const auto start = std::chrono::steady_clock::now();
     T result = compute();
-    glFinish();
+    finishGl();
     computeSeconds_ +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

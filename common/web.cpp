@@ -27,8 +27,20 @@ void handOver(const std::filesystem::path& path) {
                   reinterpret_cast<const unsigned char*>(bytes.data()), int(bytes.size()));
 }
 
+namespace {
+bool waited = false;  // main() has given the browser a turn: it ends asynchronously
+int exitCode = 0;
+}  // namespace
+
 void waitForNextFrame() {
+    waited = true;
     pbr_wait_for_animation_frame();
+}
+
+void exitWithAfterMain(int code) {
+    if (!waited) return;  // main() returns synchronously, and the page sees its code
+    exitCode = code;
+    emscripten_async_call([](void*) { emscripten_force_exit(exitCode); }, nullptr, 0);
 }
 
 }  // namespace pbr::web

@@ -16,9 +16,14 @@ namespace pbr::web {
 void handOver(const std::filesystem::path& path);
 // Returns at the browser's next animation frame (the sample's loop is suspended meanwhile).
 void waitForNextFrame();
+// Once main() has waited for a frame, the browser no longer sees what it returns (emscripten
+// 3.1.6 drops the return value of a main that resumed): the App says how the run ended as it
+// goes, and the page exits with that code right after main() returns.
+void exitWithAfterMain(int code);
 #else
 inline void handOver(const std::filesystem::path&) {}
 inline void waitForNextFrame() {}
+inline void exitWithAfterMain(int) {}
 #endif
 
 }  // namespace pbr::web

@@ -1,18 +1,22 @@
 #!/usr/bin/python3
-"""Writes the script that puts a web sample's files (its shaders and assets) into the page's own
-file system before main() runs: a --pre-js of the page, the bytes in base64.
+"""Puts a web sample's files (its shaders and assets) into its page: a script, where the shell
+(web/shell.html) has its <!-- pbr:files --> marker, that writes them into the page's own file
+system before main() runs, the bytes in base64.
 
-    web/embed.py --out build/web/embed/05_ibl_specular.js SOURCE@/DESTINATION ...
+    web/embed.py --page build/web/05_ibl_specular.html SOURCE@/DESTINATION ...
 
 A SOURCE folder is taken whole. The files travel as text beside the program, not inside the
-wasm: browsers refuse to compile a module of more than 8 MB at once, and the page compiles its
-module before main runs (so that a capture never races the start-up). Standard library only.
+wasm (browsers refuse to compile a module of more than 8 MB at once, and the page compiles its
+module before main runs, so that a capture never races the start-up), and after emscripten
+linked the page (which would otherwise parse and minify megabytes of base64). The page is
+rewritten whole, or removed when its files cannot be put in. Standard library only.
 """
 import argparse
 import base64
 import json
 import os
 import pathlib
+import sys
 import tempfile
 
 
@@ -29,32 +33,39 @@ def files_of(source, destination):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", required=True)
+    parser.add_argument("--page", required=True)
     parser.add_argument("entries", nargs="+", help="SOURCE@/DESTINATION")
     args = parser.parse_args()
 
-    lines = ["// Written by web/embed.py: this page's files, put into its file system before main().",
-             'Module["preRun"] = Module["preRun"] || [];',
+    lines = ["<script>",
+             "// web/embed.py: this page's files, written into its file system before main(); the",
+             "// script then leaves the page (its megabytes of text are not the page's content)",
+             "(function (script) {",
              'Module["preRun"].push(function () {',
              "  function put(path, text) {",
              "    var binary = atob(text), bytes = new Uint8Array(binary.length);",
              "    for (var i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);",
-             '    FS.mkdirTree(path.substring(0, path.lastIndexOf("/")));',
-             "    FS.writeFile(path, bytes);",
+             '    Module.FS.mkdirTree(path.substring(0, path.lastIndexOf("/")));',
+             "    Module.FS.writeFile(path, bytes);",
              "  }"]
     for entry in args.entries:
         source, _, destination = entry.partition("@")
         for path, target in files_of(source, destination):
             data = base64.b64encode(path.read_bytes()).decode("ascii")
             lines.append(f"  put({json.dumps(target)}, \"{data}\");")
-    lines.append("});")
+    lines += ["  script.remove();", "});", "})(document.currentScript);", "</script>"]
 
-    out = pathlib.Path(args.out)
-    out.parent.mkdir(parents=True, exist_ok=True)
+    out = pathlib.Path(args.page)
+    page = out.read_text(encoding="utf-8")
+    marker = "<!-- pbr:files -->"
+    if page.count(marker) != 1:
+        raise SystemExit(f"embed.py: {out}: no single {marker} marker (already packed, or not "
+                         "made from web/shell.html)")
+    page = page.replace(marker, "\n".join(lines))
     fd, temporary = tempfile.mkstemp(prefix="." + out.name + ".", suffix=".tmp", dir=out.parent)
     try:
-        with os.fdopen(fd, "w", encoding="ascii") as f:
-            f.write("\n".join(lines) + "\n")
+        with os.fdopen(fd, "w", encoding="utf-8") as f:
+            f.write(page)
             f.flush()
             os.fsync(f.fileno())
         os.chmod(temporary, 0o644)
@@ -65,4 +76,11 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    try:
+        main()
+    except BaseException:
+        # a page without its files would fail at its first read: no page instead
+        page = [a for a in sys.argv if a.endswith(".html")]
+        for path in page:
+            pathlib.Path(path).unlink(missing_ok=True)
+        raise

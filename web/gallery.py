@@ -21,24 +21,21 @@ VARIANTS = [
 
 
 def first_paragraph(readme):
-    """The README's first paragraph of prose: not a heading, a picture or a caption."""
-    paragraph = []
-    for line in readme.read_text(encoding="utf-8").splitlines():
-        text = line.strip()
-        if not text:
-            if paragraph:
-                break
+    """The README's first paragraph of prose: not a heading, a picture, a caption or a list."""
+    paragraphs = readme.read_text(encoding="utf-8").split("\n\n")
+    for paragraph in paragraphs:
+        text = paragraph.strip()
+        if not text or text.startswith(("#", "![", "*", "|", "```", "-", "<")):
             continue
-        if text.startswith(("#", "![", "*", "|", "```", "-")) and not paragraph:
-            continue
-        paragraph.append(text)
-    return " ".join(paragraph)
+        return " ".join(line.strip() for line in text.splitlines())
+    return ""
 
 
 def markdown_inline(text):
     """The little markdown a first paragraph has: bold, code, links."""
     out = html.escape(text, quote=False)
     out = re.sub(r"\*\*(.+?)\*\*", r"<b>\1</b>", out)
+    out = re.sub(r"\*([^*]+)\*", r"<i>\1</i>", out)
     out = re.sub(r"`([^`]+)`", r"<code>\1</code>", out)
     out = re.sub(r"\[([^\]]+)\]\(([^)]+)\)", r"\1", out)  # relative links mean nothing here
     out = re.sub(r"&lt;(https?://[^&\s]+)&gt;", r'<a href="\1">\1</a>', out)

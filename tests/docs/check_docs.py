@@ -225,10 +225,16 @@ def check_golden_update(source, build):
     if not goldens:
         fail("no golden pictures found")
     for golden in goldens:
-        if not any(re.search(r"\.MatchesGolden/" + re.escape(golden) + r"_[a-z_]+$", name)
-                   for name in selected):
+        if not any(re.search(r"^[A-Za-z]+/GoldenImage\.MatchesGolden/" + re.escape(golden) +
+                             r"_[a-z_]+$", name) for name in selected):
             fail(f"the golden-update command ({lines[0]}) runs no test that rewrites "
                  f"tests/golden/{golden}.png")
+    web_goldens = sorted(p.stem for p in (source / "tests" / "golden" / "web").glob("*.png"))
+    for golden in web_goldens:  # the browser's (tests/web), named <golden>_webgl
+        if not any(re.search(r"WebGolden\.MatchesGolden/" + re.escape(golden) + r"_webgl$", name)
+                   for name in selected):
+            fail(f"the golden-update command ({lines[0]}) runs no test that rewrites "
+                 f"tests/golden/web/{golden}.png")
     if "PBR_UPDATE_GOLDENS" not in (source / "tests" / "support" / "golden.cpp").read_text():
         fail("tests/support/golden.cpp does not read PBR_UPDATE_GOLDENS")
 
@@ -284,7 +290,8 @@ def variables_read(source, folders):
 
 
 def cmake_options(source):
-    """The build's own settings (option() and CACHE variables), which READMEs name as -D flags."""
+    """The build's own settings (option() and CACHE variables), which READMEs name as -D flags,
+    and the switches common/'s headers define."""
     names = set()
     for path in [source / "CMakeLists.txt", *source.glob("*/**/CMakeLists.txt"), *source.glob("cmake/*.cmake")]:
         if "build" in path.relative_to(source).parts[:1]:
@@ -292,6 +299,8 @@ def cmake_options(source):
         text = path.read_text(errors="replace")
         names |= set(re.findall(r"option\(\s*(PBR_[A-Z_]+)", text))
         names |= set(re.findall(r"set\(\s*(PBR_[A-Z_]+)[^)]*\bCACHE\b", text))
+    for path in (source / "common").glob("*.h"):  # the code's own switches (PBR_WEBGL)
+        names |= set(re.findall(r"#define (PBR_[A-Z_]+)", path.read_text(errors="replace")))
     return names
 
 

@@ -249,6 +249,9 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
 ::testing::AssertionResult matchesGolden(const std::string& name, const SampleRender& render,
                                          const GoldenGate& gate) {
     const fs::path goldenPath = fs::path(PBR_GOLDEN_DIR) / (name + ".png");
+    // `name` may lie in a folder of the goldens ("web/01_lighting"); the pictures kept beside the
+    // render go by its last part
+    const std::string stem = fs::path(name).filename().string();
     Image actual;
     try {
         actual = readImage(render.image, 3);
@@ -275,7 +278,7 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
         }
         entry.diff = compareImages(actual, previous, gate.channelThreshold);
         const Image diffImage = differenceImage(actual, previous, 16);
-        const fs::path previousPath = render.image.parent_path() / (name + ".old-golden.png");
+        const fs::path previousPath = render.image.parent_path() / (stem + ".old-golden.png");
         writeFileAtomically(previousPath, encodePng(previous));
         copyFile(render.image, goldenPath);
         writeMetadata(fs::path(PBR_GOLDEN_DIR) / (name + ".json"), name, actual, render.renderer,
@@ -306,9 +309,9 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
 
     // Leave the pictures beside the render too, for a person to look at.
     const fs::path dir = render.image.parent_path();
-    const fs::path keptActual = dir / (name + ".actual.png");
-    const fs::path keptExpected = dir / (name + ".expected.png");
-    const fs::path diffPath = dir / (name + ".diff.png");
+    const fs::path keptActual = dir / (stem + ".actual.png");
+    const fs::path keptExpected = dir / (stem + ".expected.png");
+    const fs::path diffPath = dir / (stem + ".diff.png");
     if (fs::absolute(render.image) != fs::absolute(keptActual)) copyFile(render.image, keptActual);
     copyFile(goldenPath, keptExpected);
     writePng(diffPath, diffImage);

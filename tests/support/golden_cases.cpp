@@ -82,4 +82,16 @@ std::vector<GoldenCase> goldenCases() {
     return cases;
 }
 
+std::vector<GoldenCase> webGoldenCases() {
+    return {
+        {"01_lighting", "01_lighting", {}, 0.15},
+        {"02_lighting_textured", "02_lighting_textured", {}, 0.1},
+        {"04_ibl_irradiance", "04_ibl_irradiance"},
+        {"05_ibl_specular", "05_ibl_specular"},
+        {"05_ibl_specular_textured", "05_ibl_specular", {"--textured"}},
+        {"06_brdf_lut", "06_brdf_lut", {}, 0.3},
+        {"09_light_types", "09_light_types", {}, 0.1},
+    };
+}
+
 }  // namespace pbr::test

@@ -22,4 +22,8 @@ struct GoldenCase {
 
 std::vector<GoldenCase> goldenCases();
 
+// The goldens of the browser build (tests/golden/web/<golden>.png): each sample of the web build
+// at its default view (05 also --textured), named as the native golden it is compared with.
+std::vector<GoldenCase> webGoldenCases();
+
 }  // namespace pbr::test

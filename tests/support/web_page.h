@@ -1,0 +1,36 @@
+#pragma once
+// A web sample's page (build/web/<sample>.html, ./build.sh web) run in headless Chromium on its
+// software GL (SwiftShader) until the sample exits, and what it left in the page: its log, its
+// exit code and the files it wrote (web/shell.html keeps each one's bytes in the DOM;
+// tests/web/run_page.js, run by node, drives the browser and takes them out).
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "support/process.h"
+
+namespace pbr::test {
+
+struct PageRun {
+    RunResult browser;              // the driver's exit code and messages (the browser's on failure)
+    std::optional<int> exitCode;    // the sample's; none when it is still running or never ran
+    std::string log;                // what the sample printed (stdout and stderr, in order)
+    std::map<std::string, std::string> files;  // name -> bytes
+};
+
+// Why the web tests cannot run on this machine (no browser, no web build), or nullopt.
+std::optional<std::string> webUnavailable(const std::string& sample = "01_lighting");
+
+// build/web/<sample>.html
+std::filesystem::path webPage(const std::string& sample);
+
+// Opens the page with `args` as the sample's command line (the query string, one item an
+// argument) and waits for it to exit (4 minutes at most); the files it wrote land in `dir`.
+// `input` goes after '#' (web/shell.html): "hold=87" keeps W down, "move=8,0" moves the mouse
+// 8 pixels right at every frame.
+PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
+                const std::filesystem::path& dir, const std::string& input = "");
+
+}  // namespace pbr::test

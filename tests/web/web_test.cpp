@@ -1,0 +1,229 @@
+// The browser build (./build.sh web) in a real browser: every web sample's page rendered in
+// headless Chromium on its software GL (SwiftShader), against its own golden (the native gate)
+// and against the native golden of the same picture (a looser gate: another rasterizer), and
+// what a page must do besides: the same bytes twice, a bad flag answered as natively, the
+// desktop-style frame loop, the gallery. Skipped, saying why, where there is no browser or no
+// web build.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <set>
+
+#include "support/golden.h"
+#include "support/golden_cases.h"
+#include "support/web_page.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+#define PBR_NEED_WEB(sample)                                        \
+    if (const auto whyNot = webUnavailable(sample)) GTEST_SKIP() << *whyNot
+
+// A web picture against the native golden of the same lesson. Measured on the web goldens
+// (SwiftShader against llvmpipe): at most 0.2 % of the pixels off by more than 8 levels, PSNR
+// 47.7 dB or more. The gate takes 0.5 % and 46 dB: 01 with roughness + 0.05 (1.0 %, 44.1 dB) and
+// with a light missing (10.8 %, 31.0 dB) fail it (Web.NativeGateRejectsSmallChanges).
+const GoldenGate kWebToNativeGate{.channelThreshold = 8, .maxFractionOver = 0.005, .minPsnr = 46.0};
+
+// One page run that must succeed: exit code 0, no GL error, its picture handed back.
+struct WebRender {
+    PageRun page;
+    fs::path image;
+};
+WebRender renderPage(const std::string& sample, std::vector<std::string> args,
+                     const fs::path& dir) {
+    args.insert(args.begin(), "--headless");
+    WebRender render{runPage(sample, args, dir), dir / (sample + ".png")};
+    EXPECT_EQ(render.page.exitCode, std::optional<int>(0))
+        << "the page printed:\n" << render.page.log << "\nthe browser:\n" << render.page.browser.err;
+    EXPECT_EQ(render.page.log.find("GL error"), std::string::npos) << render.page.log;
+    EXPECT_EQ(render.page.files.count(sample + ".png"), 1u) << render.page.log;
+    return render;
+}
+
+SampleRender asSampleRender(const WebRender& render) {
+    SampleRender sample;
+    sample.run.exitCode = render.page.exitCode.value_or(-1);
+    sample.run.err = render.page.log;
+    sample.image = render.image;
+    sample.backend = "webgl";
+    sample.renderer = "Chromium WebGL 2 (SwiftShader)";
+    return sample;
+}
+
+class WebGolden : public ::testing::TestWithParam<GoldenCase> {};
+
+// Named MatchesGolden/<golden>_webgl, so that the golden-update command rewrites the web goldens
+// with the native ones.
+TEST_P(WebGolden, MatchesGolden) {
+    const GoldenCase& golden = GetParam();
+    PBR_NEED_WEB(golden.sample);
+    const fs::path dir = testOutputDir("web_golden_" + golden.golden);
+    const WebRender render = renderPage(golden.sample, golden.args, dir);
+    if (!fs::exists(render.image)) return;
+    const Image image = readImage(render.image, 3);
+    if (golden.minNonBlank > 0.0) {
+        EXPECT_GT(double(pixelsUnlikeCorner(image)) / (double(image.width) * image.height),
+                  golden.minNonBlank);
+    }
+    EXPECT_TRUE(matchesGolden("web/" + golden.golden, asSampleRender(render)))
+        << "the page printed:\n" << render.page.log;
+    const GoldenVerdict native =
+        judge(image, readImage(fs::path(PBR_GOLDEN_DIR) / (golden.golden + ".png"), 3),
+              kWebToNativeGate);
+    std::printf("%s against the native golden: %s\n", golden.golden.c_str(),
+                native.summary.c_str());
+    EXPECT_TRUE(native.pass) << "the web picture is not the native one: " << native.summary;
+}
+
+INSTANTIATE_TEST_SUITE_P(Pages, WebGolden, ::testing::ValuesIn(webGoldenCases()),
+                         [](const auto& info) { return info.param.golden + "_webgl"; });
+
+// Every web golden has its case, and the other way round.
+TEST(Web, EveryWebGoldenFileHasACase) {
+    std::set<std::string> files, metadata, cases;
+    for (const auto& entry : fs::directory_iterator(fs::path(PBR_GOLDEN_DIR) / "web")) {
+        if (entry.path().extension() == ".png") files.insert(entry.path().stem().string());
+        if (entry.path().extension() == ".json") metadata.insert(entry.path().stem().string());
+    }
+    for (const GoldenCase& golden : webGoldenCases()) cases.insert(golden.golden);
+    EXPECT_EQ(files, cases);
+    EXPECT_EQ(metadata, cases);
+}
+
+// The gate against the native goldens still sees a small real change in a web picture.
+TEST(Web, NativeGateRejectsSmallChanges) {
+    PBR_NEED_WEB("01_lighting");
+    const Image golden = readImage(fs::path(PBR_GOLDEN_DIR) / "01_lighting.png", 3);
+    for (const auto& [name, args] :
+         {std::pair{"rougher", std::vector<std::string>{"--roughness-offset", "0.05"}},
+          {"three_lights", {"--lights", "3"}}}) {
+        const fs::path dir = testOutputDir(std::string("web_gate_") + name);
+        const WebRender render = renderPage("01_lighting", args, dir);
+        const GoldenVerdict verdict = judge(readImage(render.image, 3), golden, kWebToNativeGate);
+        std::printf("%s: %s\n", name, verdict.summary.c_str());
+        EXPECT_FALSE(verdict.pass) << name << " passed the web-to-native gate: " << verdict.summary;
+    }
+}
+
+// A page draws the same bytes every time: the IBL maps computed in the page included.
+TEST(Web, TwoRunsGiveTheSameBytes) {
+    PBR_NEED_WEB("04_ibl_irradiance");
+    for (const std::string sample : {"01_lighting", "04_ibl_irradiance"}) {
+        std::string first;
+        for (const char* run : {"first", "second"}) {
+            const fs::path dir = testOutputDir("web_repeat_" + sample + "_" + run);
+            const WebRender render = renderPage(sample, {"--size", "640x360"}, dir);
+            const std::string bytes = render.page.files.at(sample + ".png");
+            ASSERT_FALSE(bytes.empty());
+            if (first.empty())
+                first = bytes;
+            else
+                EXPECT_TRUE(bytes == first) << sample << ": two runs of the page differ";
+        }
+    }
+}
+
+// A bad flag in the address is what it is on the command line: the usage, one last line naming
+// the flag, exit code 2, nothing drawn.
+TEST(Web, BadFlagIsTheUsageAndOneLine) {
+    PBR_NEED_WEB("01_lighting");
+    const fs::path dir = testOutputDir("web_bad_flag");
+    const PageRun page = runPage("01_lighting", {"--headless", "--lights", "5"}, dir);
+    EXPECT_EQ(page.exitCode, std::optional<int>(2)) << page.log;
+    std::string last = page.log;
+    while (!last.empty() && last.back() == '\n') last.pop_back();
+    last = last.substr(last.rfind('\n') + 1);
+    EXPECT_EQ(last, "error: --lights: 5 is out of range [0, 4]") << page.log;
+    EXPECT_NE(page.log.find("usage: 01_lighting"), std::string::npos) << page.log;
+    EXPECT_TRUE(page.files.empty());
+}
+
+// Without --headless the page runs the sample's own loop, one frame per animation frame of the
+// browser (the loop waits at each swap), shows the canvas, and writes the last frame on request.
+TEST(Web, TheFrameLoopRunsInThePage) {
+    PBR_NEED_WEB("05_ibl_specular");
+    const fs::path dir = testOutputDir("web_loop");
+    const PageRun page =
+        runPage("05_ibl_specular", {"--frames", "3", "--size", "320x180", "--output", "last.png"},
+                dir);
+    EXPECT_EQ(page.exitCode, std::optional<int>(0)) << page.log;
+    ASSERT_EQ(page.files.count("last.png"), 1u) << page.log;
+    EXPECT_NE(page.log.find("(320x180, msaa 4, glfw, "), std::string::npos) << page.log;
+    const Image image = readImage(dir / "last.png", 3);
+    EXPECT_GT(double(pixelsUnlikeCorner(image)) / (double(image.width) * image.height), 0.2);
+}
+
+// The keys and the mouse of the native window work in the page: W held walks towards the grid
+// (the spheres cover more of the picture), the mouse moving right turns the view right (the
+// grid moves left). The page runs in real time, so how far is the frames' business; the
+// directions are the test's.
+TEST(Web, KeysAndMouseMoveTheCamera) {
+    PBR_NEED_WEB("01_lighting");
+    struct Picture {
+        double covered = 0.0, centreX = 0.0;
+    };
+    auto run = [](const std::string& name, const std::string& input) {
+        const fs::path dir = testOutputDir("web_input_" + name);
+        const PageRun page = runPage("01_lighting",
+                                     {"--frames", "6", "--size", "320x180", "--camera", "0,0,20",
+                                      "--output", "last.png"},
+                                     dir, input);
+        EXPECT_EQ(page.exitCode, std::optional<int>(0)) << page.log;
+        Picture picture;
+        if (page.files.count("last.png") == 0) return picture;
+        const Image image = readImage(dir / "last.png", 3);
+        double count = 0.0, sumX = 0.0;
+        for (int y = 0; y < image.height; ++y) {
+            for (int x = 0; x < image.width; ++x) {
+                int diff = 0;
+                for (int c = 0; c < 3; ++c)
+                    diff = std::max(diff, std::abs(int(image.at(x, y, c)) - int(image.at(0, 0, c))));
+                if (diff > 8) {
+                    ++count;
+                    sumX += x;
+                }
+            }
+        }
+        picture.covered = count / (double(image.width) * image.height);
+        picture.centreX = count > 0 ? sumX / count : 0.0;
+        return picture;
+    };
+    const Picture still = run("none", ""), walked = run("w", "hold=87"),
+                  turned = run("mouse", "move=20,0");
+    std::printf("covered: still %.3f, W held %.3f; centre x: still %.1f, mouse right %.1f\n",
+                still.covered, walked.covered, still.centreX, turned.centreX);
+    EXPECT_GT(walked.covered, still.covered * 1.05);
+    EXPECT_LT(turned.centreX, still.centreX - 10.0);
+}
+
+// The gallery links every web sample's page, each page is there, and each entry says what it
+// teaches (its README's first paragraph).
+TEST(Web, GalleryLinksEveryPage) {
+    PBR_NEED_WEB("01_lighting");
+    std::ifstream in(fs::path(PBR_WEB_DIR) / "index.html");
+    ASSERT_TRUE(in) << "no build/web/index.html";
+    const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::set<std::string> samples;
+    for (const GoldenCase& golden : webGoldenCases()) samples.insert(golden.sample);
+    for (const std::string& sample : samples) {
+        EXPECT_NE(page.find("href=\"" + sample + ".html\""), std::string::npos) << sample;
+        EXPECT_TRUE(fs::exists(webPage(sample))) << sample;
+    }
+    EXPECT_NE(page.find("LearnOpenGL"), std::string::npos);
+    const std::regex image("<img src=\"([^\"]+)\"");
+    int images = 0;
+    for (auto it = std::sregex_iterator(page.begin(), page.end(), image);
+         it != std::sregex_iterator(); ++it, ++images) {
+        EXPECT_TRUE(fs::exists(fs::path(PBR_WEB_DIR) / (*it)[1].str())) << (*it)[1].str();
+    }
+    EXPECT_EQ(images, int(samples.size()));
+}
+
+}  // namespace
+}  // namespace pbr::test
