@@ -14,10 +14,11 @@ rewritten whole, or removed when its files cannot be put in. Standard library on
 import argparse
 import base64
 import json
-import os
 import pathlib
 import sys
-import tempfile
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from whole_file import write_whole  # noqa: E402
 
 
 def files_of(source, destination):
@@ -62,18 +63,7 @@ def main():
         raise SystemExit(f"embed.py: {out}: no single {marker} marker (already packed, or not "
                          "made from web/shell.html)")
     page = page.replace(marker, "\n".join(lines))
-    fd, temporary = tempfile.mkstemp(prefix="." + out.name + ".", suffix=".tmp", dir=out.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            f.write(page)
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(temporary, 0o644)
-        os.replace(temporary, out)
-    except BaseException:
-        os.unlink(temporary)
-        raise
-
+    write_whole(out, page)
 
 if __name__ == "__main__":
     try:

@@ -8,11 +8,13 @@ Standard library only; run by the web build (web/CMakeLists.txt).
 """
 import argparse
 import html
-import os
 import pathlib
 import re
 import shutil
-import tempfile
+import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from whole_file import write_whole  # noqa: E402
 
 # pages worth a link of their own besides the default: (sample, query, what it shows, golden)
 VARIANTS = [
@@ -50,21 +52,6 @@ def picture(source, out, golden):
             shutil.copyfile(candidate, out / "img" / f"{golden}.png")
             return f"img/{golden}.png"
     return None
-
-
-def write_whole(path, text):
-    """Whole or absent: a temporary beside the page, renamed over it."""
-    fd, temporary = tempfile.mkstemp(prefix="." + path.name + ".", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            f.write(text)
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(temporary, 0o644)
-        os.replace(temporary, path)
-    except BaseException:
-        os.unlink(temporary)
-        raise
 
 
 def main():

@@ -91,14 +91,9 @@ INSTANTIATE_TEST_SUITE_P(Backends, GoldenImage,
 // The table and the folder agree: every golden picture (with its .json) has a case, and every
 // case has its picture. A golden without a case would never be checked or rewritten.
 TEST(Golden, EveryGoldenFileHasACase) {
-    std::set<std::string> files, cases, metadata;
-    for (const auto& entry : fs::directory_iterator(PBR_GOLDEN_DIR)) {
-        if (entry.path().extension() == ".png") files.insert(entry.path().stem().string());
-        if (entry.path().extension() == ".json") metadata.insert(entry.path().stem().string());
-    }
-    for (const GoldenCase& golden : goldenCases()) cases.insert(golden.golden);
-    EXPECT_EQ(files, cases);
-    EXPECT_EQ(metadata, cases);
+    const GoldenFolder folder = goldenFolder(PBR_GOLDEN_DIR, goldenCases());
+    EXPECT_EQ(folder.pictures, folder.cases);
+    EXPECT_EQ(folder.metadata, folder.cases);
 }
 
 // On one machine the backends give the same pixels, bit for bit (both are llvmpipe here).

@@ -94,4 +94,15 @@ std::vector<GoldenCase> webGoldenCases() {
     };
 }
 
+GoldenFolder goldenFolder(const std::filesystem::path& dir, const std::vector<GoldenCase>& cases) {
+    GoldenFolder folder;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        const std::string extension = entry.path().extension().string();
+        if (extension == ".png") folder.pictures.insert(entry.path().stem().string());
+        if (extension == ".json") folder.metadata.insert(entry.path().stem().string());
+    }
+    for (const GoldenCase& golden : cases) folder.cases.insert(golden.golden);
+    return folder;
+}
+
 }  // namespace pbr::test

@@ -1,6 +1,8 @@
 #pragma once
 // The table of golden pictures, shared by the golden tests (software rendering, the tight gate)
 // and the GPU tests (a GPU through EGL, a gate of their own).
+#include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,5 +27,12 @@ std::vector<GoldenCase> goldenCases();
 // The goldens of the browser build (tests/golden/web/<golden>.png): each sample of the web build
 // at its default view (05 also --textured), named as the native golden it is compared with.
 std::vector<GoldenCase> webGoldenCases();
+
+// The goldens a folder holds: the names of its pictures (<golden>.png) and of their metadata
+// (<golden>.json), and the names a table of cases gives; a test compares the three.
+struct GoldenFolder {
+    std::set<std::string> pictures, metadata, cases;
+};
+GoldenFolder goldenFolder(const std::filesystem::path& dir, const std::vector<GoldenCase>& cases);
 
 }  // namespace pbr::test
