@@ -50,6 +50,17 @@ WEB_PACKAGES=(emscripten chromium-headless-shell)
 
 is_installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 
+# The apt-get to install with, in APT: as root, or through sudo. Returns 1 when neither can be.
+apt_command() {
+    if [ "$(id -u)" -eq 0 ]; then
+        APT=(env DEBIAN_FRONTEND=noninteractive apt-get)
+    elif command -v sudo >/dev/null 2>&1; then
+        APT=(sudo env DEBIAN_FRONTEND=noninteractive apt-get)
+    else
+        return 1
+    fi
+}
+
 install_missing() {
     if ! command -v dpkg-query >/dev/null 2>&1; then
         echo "build.sh: not a Debian system; make sure these are installed: ${PACKAGES[*]} ${OPTIONAL_PACKAGES[*]}" >&2
@@ -59,19 +70,13 @@ install_missing() {
     for p in "${PACKAGES[@]}"; do is_installed "$p" || missing+=("$p"); done
     for p in "${OPTIONAL_PACKAGES[@]}"; do is_installed "$p" || optional+=("$p"); done
     [ ${#missing[@]} -eq 0 ] && [ ${#optional[@]} -eq 0 ] && return 0
-    local apt=(env DEBIAN_FRONTEND=noninteractive apt-get)
-    if [ "$(id -u)" -ne 0 ]; then
-        if command -v sudo >/dev/null 2>&1; then
-            apt=(sudo env DEBIAN_FRONTEND=noninteractive apt-get)
-        elif [ ${#missing[@]} -eq 0 ]; then
-            return 0  # only optional packages missing: build without them
-        else
-            echo "build.sh: missing Debian packages: ${missing[*]}" >&2
-            echo "build.sh: not root and no sudo; as root run: apt-get install ${missing[*]}" >&2
-            exit 1
-        fi
+    if ! apt_command; then
+        [ ${#missing[@]} -eq 0 ] && return 0  # only optional packages missing: build without them
+        echo "build.sh: missing Debian packages: ${missing[*]}" >&2
+        echo "build.sh: not root and no sudo; as root run: apt-get install ${missing[*]}" >&2
+        exit 1
     fi
-    "${apt[@]}" update -q || echo "build.sh: apt-get update failed; trying the install anyway" >&2
+    "${APT[@]}" update -q || echo "build.sh: apt-get update failed; trying the install anyway" >&2
     for p in "${optional[@]}"; do
         if apt-cache show "$p" >/dev/null 2>&1; then
             missing+=("$p")
@@ -81,7 +86,7 @@ install_missing() {
     done
     [ ${#missing[@]} -eq 0 ] && return 0
     echo "build.sh: installing ${missing[*]}" >&2
-    if ! "${apt[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
+    if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
         echo "build.sh: could not install: ${missing[*]}" >&2
         exit 1
     fi
@@ -100,18 +105,14 @@ install_web() {
     local missing=() p
     for p in "${WEB_PACKAGES[@]}"; do is_installed "$p" || missing+=("$p"); done
     [ ${#missing[@]} -eq 0 ] && return 0
-    local apt=(env DEBIAN_FRONTEND=noninteractive apt-get)
-    if [ "$(id -u)" -ne 0 ]; then
-        if ! command -v sudo >/dev/null 2>&1; then
-            echo "build.sh: not root and no sudo; as root run: apt-get install --no-install-recommends ${missing[*]}" >&2
-            return 1
-        fi
-        apt=(sudo env DEBIAN_FRONTEND=noninteractive apt-get)
+    if ! apt_command; then
+        echo "build.sh: not root and no sudo; as root run: apt-get install --no-install-recommends ${missing[*]}" >&2
+        return 1
     fi
     echo "build.sh: installing ${missing[*]} (the web build)" >&2
-    if ! "${apt[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
-        "${apt[@]}" update -q || true
-        if ! "${apt[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
+    if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
+        "${APT[@]}" update -q || true
+        if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
             echo "build.sh: could not install: ${missing[*]}" >&2
             return 1
         fi

@@ -121,8 +121,9 @@ GLFWwindow* openWindow(const std::string& title, int width, int height, bool deb
     glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
     GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!window) {
-        whyNot = std::string(kWebGl ? "cannot make a WebGL 2 context: " :
-                                      "cannot open a GL 3.3 core window: ") + lastGlfwError;
+        whyNot = std::string(kWebGl ? "cannot make a WebGL 2 context: "
+                                    : "cannot open a GL 3.3 core window: ") +
+                 lastGlfwError;
         glfwTerminate();
         return nullptr;
     }

@@ -114,19 +114,6 @@ GLenum pixelFormatOf(GLenum internalFormat) {
     }
 }
 
-int channelsOf(GLenum internalFormat) {
-    switch (pixelFormatOf(internalFormat)) {
-        case GL_RED:
-            return 1;
-        case GL_RG:
-            return 2;
-        case GL_RGB:
-            return 3;
-        default:
-            return 4;
-    }
-}
-
 void finishGl() {
     glFinish();
     if (kWebGl) {

@@ -30,9 +30,8 @@ inline constexpr GLenum kHalfFloatRgb = kWebGl ? GL_RGBA16F : GL_RGB16F;
 inline constexpr GLenum kFloatRgb = kWebGl ? GL_RGBA32F : GL_RGB32F;
 
 // The format (GL_RED, GL_RG, GL_RGB, GL_RGBA) that goes with an internal format in uploads and
-// read-backs (OpenGL ES requires the match), and how many channels that is.
+// read-backs (OpenGL ES requires the match).
 GLenum pixelFormatOf(GLenum internalFormat);
-int channelsOf(GLenum internalFormat);
 
 // The GL objects alive in the current context, found by asking GL about every name up to a
 // bound (glIsTexture, glIsBuffer, ...): independent of how they were made, so a leak through a

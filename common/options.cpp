@@ -57,7 +57,8 @@ constexpr size_t kFlagColumn = 30;  // where the help starts; a longer flag puts
 // what from_chars takes (no leading space or '+', no hexadecimal).
 bool parseFloating(const std::string& text, double& out, std::errc& error) {
     error = std::errc::invalid_argument;
-    if (text.empty() || text.front() == '+' || std::isspace(static_cast<unsigned char>(text.front())) ||
+    if (text.empty() || text.front() == '+' ||
+        std::isspace(static_cast<unsigned char>(text.front())) ||
         text.find_first_of("xX") != std::string::npos) {
         return false;
     }

@@ -50,25 +50,36 @@ std::vector<float> readLevelRgba(GLenum target, GLuint texture, int level, int w
 std::vector<float> firstChannels(const std::vector<float>& rgba, int channels) {
     std::vector<float> out;
     out.reserve(rgba.size() / 4 * size_t(channels));
-    for (size_t i = 0; i < rgba.size(); i += 4) out.insert(out.end(), &rgba[i], &rgba[i] + channels);
+    for (size_t i = 0; i < rgba.size(); i += 4) {
+        out.insert(out.end(), &rgba[i], &rgba[i] + channels);
+    }
     return out;
 }
 #endif
+
+// RGB floats with alpha 1 added.
+std::vector<float> withOpaqueAlpha(const std::vector<float>& rgb) {
+    std::vector<float> rgba;
+    rgba.reserve(rgb.size() / 3 * 4);
+    for (size_t i = 0; i < rgb.size(); i += 3) {
+        rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 1.0f});
+    }
+    return rgba;
+}
 }  // namespace
 
 Texture2D::Texture2D(const Image& source, ColorSpace colorSpace, TextureFilter filter)
     : width_(source.width), height_(source.height) {
-    static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
     static constexpr GLenum kLinear[] = {GL_R8, GL_RG8, GL_RGB8, GL_RGBA8};
     if (source.channels < 1 || source.channels > 4) {
         throw Error("Texture2D: unsupported channel count");
     }
     const Image image = colorSpace == ColorSpace::Srgb ? widenForSrgb(source) : source;
-    const GLenum format = kFormats[image.channels - 1];
     GLenum internalFormat = kLinear[image.channels - 1];
     if (colorSpace == ColorSpace::Srgb) {
         internalFormat = image.channels == 3 ? GL_SRGB8 : GL_SRGB8_ALPHA8;
     }
+    const GLenum format = pixelFormatOf(internalFormat);
     glBindTexture(GL_TEXTURE_2D, texture_.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), image.width, image.height, 0, format,
@@ -112,11 +123,11 @@ Texture2D::Texture2D(int width, int height, GLenum internalFormat)
 }
 
 std::vector<float> Texture2D::readFloats(int channels) const {
-    static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
 #ifdef PBR_WEBGL
-    (void)kFormats;
-    return firstChannels(readLevelRgba(GL_TEXTURE_2D, texture_.id(), 0, width_, height_), channels);
+    return firstChannels(readLevelRgba(GL_TEXTURE_2D, texture_.id(), 0, width_, height_),
+                         channels);
 #else
+    static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
     std::vector<float> texels(size_t(width_) * size_t(height_) * size_t(channels));
     glBindTexture(GL_TEXTURE_2D, texture_.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -154,7 +165,8 @@ std::vector<float> TextureCube::readFace(int face, int level) const {
     const int s = std::max(1, size_ >> level);
 #ifdef PBR_WEBGL
     return firstChannels(
-        readLevelRgba(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), texture_.id(), level, s, s), 3);
+        readLevelRgba(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), texture_.id(), level, s, s),
+        3);
 #else
     std::vector<float> texels(size_t(s) * size_t(s) * 3);
     glBindTexture(GL_TEXTURE_CUBE_MAP, texture_.id());
@@ -168,16 +180,13 @@ std::vector<float> TextureCube::readFace(int face, int level) const {
 void TextureCube::writeFace(int face, int level, const std::vector<float>& rgb) {
     const int s = std::max(1, size_ >> level);
     if (rgb.size() != size_t(s) * size_t(s) * 3) throw Error("TextureCube::writeFace: wrong size");
-    std::vector<float> rgba;
-    if (pixelFormatOf(internalFormat_) == GL_RGBA) {  // OpenGL ES uploads in the texture's format
-        rgba.reserve(rgb.size() / 3 * 4);
-        for (size_t i = 0; i < rgb.size(); i += 3)
-            rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 1.0f});
-    }
+    // OpenGL ES uploads in the texture's own format
+    const bool rgba = pixelFormatOf(internalFormat_) == GL_RGBA;
+    const std::vector<float> expanded = rgba ? withOpaqueAlpha(rgb) : std::vector<float>();
     bind(0);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + GLenum(face), level, 0, 0, s, s,
-                    rgba.empty() ? GL_RGB : GL_RGBA, GL_FLOAT, rgba.empty() ? rgb.data() : rgba.data());
+                    rgba ? GL_RGBA : GL_RGB, GL_FLOAT, rgba ? expanded.data() : rgb.data());
 }
 
 namespace {
@@ -240,12 +249,7 @@ KtxImage TextureCube::toKtx() const {
                    .levels = levels_};
     for (int level = 0; level < levels_; ++level) {
         for (int face = 0; face < 6; ++face) {
-            const std::vector<float> rgb = readFace(face, level);
-            std::vector<float> rgba;
-            rgba.reserve(rgb.size() / 3 * 4);
-            for (size_t i = 0; i < rgb.size(); i += 3) {
-                rgba.insert(rgba.end(), {rgb[i], rgb[i + 1], rgb[i + 2], 1.0f});
-            }
+            const std::vector<float> rgba = withOpaqueAlpha(readFace(face, level));
             image.images.push_back(wide ? floatBytes(rgba) : toHalfBytes(rgba));
         }
     }

@@ -332,17 +332,17 @@ double linearToSrgb(double c) {
     return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
 
+bool unlikeCorner(const Image& image, int x, int y, int threshold) {
+    for (int c = 0; c < image.channels; ++c) {
+        if (std::abs(int(image.at(x, y, c)) - int(image.at(0, 0, c))) > threshold) return true;
+    }
+    return false;
+}
+
 size_t pixelsUnlikeCorner(const Image& image, int threshold) {
     size_t differing = 0;
     for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) {
-            for (int c = 0; c < image.channels; ++c) {
-                if (std::abs(int(image.at(x, y, c)) - int(image.at(0, 0, c))) > threshold) {
-                    ++differing;
-                    break;
-                }
-            }
-        }
+        for (int x = 0; x < image.width; ++x) differing += unlikeCorner(image, x, y, threshold) ? 1 : 0;
     }
     return differing;
 }

@@ -24,6 +24,8 @@ double linearToSrgb(double c);
 // How many pixels differ from the top-left corner (the clear colour) by more than `threshold`
 // levels in some channel: whether a render drew anything.
 size_t pixelsUnlikeCorner(const Image& image, int threshold = 8);
+// Whether pixel (x, y) is one of those.
+bool unlikeCorner(const Image& image, int x, int y, int threshold = 8);
 
 // The tolerance gate. A pixel "differs" when any colour channel is off by more than
 // channelThreshold levels; the image passes when few pixels differ and the PSNR stays high.

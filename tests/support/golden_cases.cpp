@@ -68,7 +68,8 @@ std::vector<GoldenCase> goldenCases() {
     for (const char* mapper : {"khronos-neutral", "aces", "reinhard", "none"}) {
         std::string name = std::string("07_tonemap_") + mapper;
         std::replace(name.begin(), name.end(), '-', '_');
-        cases.push_back({name, "07_gltf_metallic_roughness",
+        cases.push_back({name,
+                         "07_gltf_metallic_roughness",
                          {"--tonemap", mapper, "--size", "480x270", "--camera", "0,2.2,5.5"}});
     }
     // The other four material sets, each on the tutorial's close-up view, at a small size.

@@ -110,7 +110,9 @@ int buildNode(ModelRayCaster::Primitive& primitive, const MeshData& mesh,
         return index;
     }
     const glm::dvec3 extent = node.high - node.low;
-    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
+                     : extent.y >= extent.z                       ? 1
+                                                                  : 2;
     const auto begin = primitive.order.begin() + first;
     std::nth_element(begin, begin + count / 2, begin + count, [&](int a, int b) {
         return centroids[size_t(a)][axis] < centroids[size_t(b)][axis];
@@ -213,8 +215,8 @@ std::optional<ModelHit> ModelRayCaster::hit(const glm::dvec3& origin,
     return best;
 }
 
-std::pair<glm::dvec3, glm::dvec3> pixelRay(const glm::dmat4& toWorld, int width, int height,
-                                           int px, int py) {
+std::pair<glm::dvec3, glm::dvec3> pixelRay(const glm::dmat4& toWorld, int width, int height, int px,
+                                           int py) {
     const glm::dvec2 ndc(2.0 * (px + 0.5) / width - 1.0, 1.0 - 2.0 * (py + 0.5) / height);
     const glm::dvec4 nearPoint = toWorld * glm::dvec4(ndc, -1.0, 1.0);
     const glm::dvec4 farPoint = toWorld * glm::dvec4(ndc, 1.0, 1.0);

@@ -2,11 +2,10 @@
 
 #include <cctype>
 #include <cstdlib>
+#include <initializer_list>
 #include <sstream>
 #include <string_view>
-#include <initializer_list>
 #include <utility>
-
 
 namespace pbr::test {
 

@@ -14,9 +14,9 @@
 namespace pbr::test {
 
 struct PageRun {
-    RunResult browser;              // the driver's exit code and messages (the browser's on failure)
-    std::optional<int> exitCode;    // the sample's; none when it is still running or never ran
-    std::string log;                // what the sample printed (stdout and stderr, in order)
+    RunResult browser;            // the driver's exit code and messages (the browser's on failure)
+    std::optional<int> exitCode;  // the sample's; none when it is still running or never ran
+    std::string log;              // what the sample printed (stdout and stderr, in order)
     std::map<std::string, std::string> files;  // name -> bytes
 };
 
