@@ -59,8 +59,8 @@ glm::vec3 shadePointLights(const SurfacePoint& s, const glm::vec3& cameraPositio
     for (const PointLight& light : lights) {
         const glm::vec3 L = glm::normalize(light.position - s.position);
         const float distance = glm::length(light.position - s.position);
-        Lo += directLight(s.normal, V, L, light.color / (distance * distance), s.albedo,
-                          s.metallic, s.roughness);
+        Lo += directLight(s.normal, V, L, light.color / (distance * distance), s.albedo, s.metallic,
+                          s.roughness);
     }
     return glm::vec3(0.03f) * s.albedo * s.ao + Lo;
 }
@@ -133,8 +133,7 @@ float V_GGX(float NdotL, float NdotV, float alpha) {
 
 GltfSurface metallicRoughnessSurface(const glm::vec3& position, const glm::vec3& normal,
                                      const glm::vec3& baseColor, float metallic, float roughness) {
-    return {position, normal, baseColor * (1.0f - metallic),
-            glm::mix(glm::vec3(0.04f), baseColor, metallic), roughness};
+    return {position, normal, baseColor, glm::vec3(0.04f), roughness, baseColor, metallic};
 }
 
 GltfSurface specularGlossinessSurface(const glm::vec3& position, const glm::vec3& normal,
@@ -145,18 +144,20 @@ GltfSurface specularGlossinessSurface(const glm::vec3& position, const glm::vec3
 }
 
 glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
-                          const glm::vec3& radiance, const glm::vec3& diffuseColor,
-                          const glm::vec3& F0, float roughness) {
+                          const glm::vec3& radiance, const GltfSurface& s) {
     const float NdotL = std::clamp(glm::dot(N, L), 0.0f, 1.0f);
     if (NdotL <= 0.0f) return glm::vec3(0.0f);
     const glm::vec3 H = glm::normalize(V + L);
     const float NdotV = std::clamp(glm::dot(N, V), 0.0f, 1.0f);
     const float NdotH = std::clamp(glm::dot(N, H), 0.0f, 1.0f);
     const float VdotH = std::clamp(glm::dot(V, H), 0.0f, 1.0f);
-    const float alpha = std::max(roughness * roughness, kMinGgxAlpha);
-    const glm::vec3 F = F0 + (1.0f - F0) * std::pow(1.0f - VdotH, 5.0f);
-    const glm::vec3 diffuse = (1.0f - F) * diffuseColor / PI;
-    const glm::vec3 specular = F * D_GGX(NdotH, alpha) * V_GGX(NdotL, NdotV, alpha);
+    const float alpha = std::max(s.roughness * s.roughness, kMinGgxAlpha);
+    const float schlick = std::pow(1.0f - VdotH, 5.0f);
+    const glm::vec3 dielectricF = s.F0 + (1.0f - s.F0) * schlick;
+    const glm::vec3 metalF = s.metalColor + (1.0f - s.metalColor) * schlick;
+    const glm::vec3 diffuse = (1.0f - s.metallic) * (1.0f - dielectricF) * s.diffuseColor / PI;
+    const glm::vec3 specular = glm::mix(dielectricF, metalF, s.metallic) * D_GGX(NdotH, alpha) *
+                               V_GGX(NdotL, NdotV, alpha);
     return (diffuse + specular) * radiance * NdotL;
 }
 
@@ -198,7 +199,7 @@ glm::vec3 shadePunctualLights(const GltfSurface& s, const glm::vec3& cameraPosit
     for (const PunctualLight& light : lights) {
         glm::vec3 L;
         const glm::vec3 radiance = punctualRadiance(light, s.position, L);
-        color += gltfDirectLight(s.normal, V, L, radiance, s.diffuseColor, s.F0, s.roughness);
+        color += gltfDirectLight(s.normal, V, L, radiance, s);
     }
     return color;
 }

@@ -74,25 +74,29 @@ glm::dvec3 bruteForceLut(double NdotV, double roughness, int steps);
 float D_GGX(float NdotH, float alpha);
 float V_GGX(float NdotL, float NdotV, float alpha);
 constexpr float kMinGgxAlpha = 0.002f;  // MIN_GGX_ALPHA of brdf.glsl
-// A surface as the Appendix B implementation takes it: c_diff and F0 (both workflows end here).
+// A surface as the Appendix B implementation takes it (both workflows end here): a dielectric
+// layer (diffuse colour c_diff under a specular layer of reflectance F0) and a metal of colour
+// metalColor, mixed by metallic.
 struct GltfSurface {
     glm::vec3 position;  // world space
     glm::vec3 normal;    // unit, shading normal
     glm::vec3 diffuseColor;
     glm::vec3 F0;
     float roughness = 0.5f;  // perceptual
+    glm::vec3 metalColor{0.0f};
+    float metallic = 0.0f;
 };
-// The metallic-roughness workflow's c_diff and F0 from a base colour and metallic.
+// The metallic-roughness workflow: c_diff = metalColor = base colour, F0 = 0.04.
 GltfSurface metallicRoughnessSurface(const glm::vec3& position, const glm::vec3& normal,
                                      const glm::vec3& baseColor, float metallic, float roughness);
 // KHR_materials_pbrSpecularGlossiness' conversion: F0 = specular, roughness = 1 - glossiness,
-// c_diff = diffuse x (1 - the largest component of specular).
+// c_diff = diffuse x (1 - the largest component of specular), metallic 0.
 GltfSurface specularGlossinessSurface(const glm::vec3& position, const glm::vec3& normal,
                                       const glm::vec3& diffuse, const glm::vec3& specular,
                                       float glossiness);
+// mix(dielectric BRDF, metal BRDF, metallic) for one light (brdf.glsl's gltfDirectLight).
 glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
-                          const glm::vec3& radiance, const glm::vec3& diffuseColor,
-                          const glm::vec3& F0, float roughness);
+                          const glm::vec3& radiance, const GltfSurface& surface);
 float rangeAttenuation(float range, float distance);
 float spotAttenuation(const glm::vec3& lightToPoint, const glm::vec3& spotDirection,
                       float outerConeCos, float innerConeCos);

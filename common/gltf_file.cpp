@@ -1,23 +1,26 @@
 #include "gltf_file.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <functional>
 
 namespace pbr {
 
 namespace {
 
-// A recursive-descent reader of the JSON grammar that only checks: no values are kept.
+// A recursive-descent reader of the JSON grammar: it checks, and keeps the values when asked.
 class JsonChecker {
 public:
-    explicit JsonChecker(std::string_view text, GltfExtensions* extensions = nullptr)
-        : text_(text), extensions_(extensions) {}
+    explicit JsonChecker(std::string_view text, JsonValue* root = nullptr)
+        : text_(text), root_(root) {}
 
     std::optional<std::string> check() {
         if (text_.substr(0, 3) == "\xEF\xBB\xBF") at_ = 3;  // a byte-order mark, tolerated
         skipSpace();
-        if (!value(0)) return error_;
+        if (!value(0, root_)) return error_;
         skipSpace();
         if (at_ != text_.size()) {
             return "invalid JSON at " + position() + ": text after the end of the JSON";
@@ -56,48 +59,62 @@ private:
         return false;
     }
 
-    bool value(int depth) {
+    // Reads one value; keeps it in `out` unless that is null.
+    bool value(int depth, JsonValue* out) {
         if (depth > kMaxDepth) return fail("nested too deeply", "a value");
         if (atEnd()) return fail("", "a value");
+        const size_t start = at_;
+        bool ok = false;
         switch (peek()) {
             case '{':
-                return object(depth);
+                if (out) out->type = JsonValue::Type::Object;
+                return object(depth, out);
             case '[':
-                return array(depth);
+                if (out) out->type = JsonValue::Type::Array;
+                return array(depth, out);
             case '"':
-                return string();
+                if (out) out->type = JsonValue::Type::String;
+                return string(out ? &out->text : nullptr);
             case 't':
-                return literal("true");
             case 'f':
-                return literal("false");
+                ok = literal(peek() == 't' ? "true" : "false");
+                if (out) {
+                    out->type = JsonValue::Type::Bool;
+                    out->boolean = text_[start] == 't';
+                }
+                return ok;
             case 'n':
                 return literal("null");
             default:
-                if (peek() == '-' || (peek() >= '0' && peek() <= '9')) return number();
+                if (peek() == '-' || (peek() >= '0' && peek() <= '9')) {
+                    ok = number();
+                    if (ok && out) {
+                        out->type = JsonValue::Type::Number;
+                        out->number = std::strtod(
+                            std::string(text_.substr(start, at_ - start)).c_str(), nullptr);
+                    }
+                    return ok;
+                }
                 return fail(std::string("unexpected '") + peek() + "'", "a value");
         }
     }
 
-    bool object(int depth) {
+    bool object(int depth, JsonValue* out) {
         ++at_;  // {
         skipSpace();
         if (!atEnd() && peek() == '}') return ++at_, true;
         for (;;) {
             skipSpace();
             if (atEnd() || peek() != '"') return fail("expected a name in quotes", "an object");
-            const size_t keyStart = at_ + 1;
-            if (!string()) return false;
-            const std::string_view key = text_.substr(keyStart, at_ - 1 - keyStart);
+            std::string key;
+            if (!string(out ? &key : nullptr)) return false;
             skipSpace();
             if (atEnd() || peek() != ':') return fail("expected ':'", "an object");
             ++at_;
             skipSpace();
-            const size_t valueStart = at_;
-            if (!value(depth + 1)) return false;
-            if (extensions_ && depth == 0) {
-                if (key == "extensionsUsed") extensions_->used = strings(valueStart);
-                if (key == "extensionsRequired") extensions_->required = strings(valueStart);
-            }
+            JsonValue* member = nullptr;
+            if (out) member = &out->members.emplace_back(std::move(key), JsonValue{}).second;
+            if (!value(depth + 1, member)) return false;
             skipSpace();
             if (atEnd() || (peek() != ',' && peek() != '}'))
                 return fail("expected ',' or '}'", "an object");
@@ -105,13 +122,13 @@ private:
         }
     }
 
-    bool array(int depth) {
+    bool array(int depth, JsonValue* out) {
         ++at_;  // [
         skipSpace();
         if (!atEnd() && peek() == ']') return ++at_, true;
         for (;;) {
             skipSpace();
-            if (!value(depth + 1)) return false;
+            if (!value(depth + 1, out ? &out->items.emplace_back() : nullptr)) return false;
             skipSpace();
             if (atEnd() || (peek() != ',' && peek() != ']'))
                 return fail("expected ',' or ']'", "an array");
@@ -119,43 +136,54 @@ private:
         }
     }
 
-    bool string() {
+    // A string's text, unescaped into `out` (UTF-8) unless that is null.
+    bool string(std::string* out) {
         ++at_;  // "
         while (!atEnd()) {
             const unsigned char c = static_cast<unsigned char>(text_[at_]);
             if (c == '"') return ++at_, true;
             if (c < 0x20) return fail("control character inside a string", "a string");
-            if (c == '\\') {
+            if (c != '\\') {
+                if (out) out->push_back(char(c));
                 ++at_;
-                if (atEnd()) break;
-                const char escape = peek();
-                if (escape == 'u') {
-                    for (int i = 0; i < 4; ++i) {
-                        ++at_;
-                        if (atEnd()) return fail("", "a string");
-                        if (!std::isxdigit(static_cast<unsigned char>(peek())))
-                            return fail("bad \\u escape", "a string");
-                    }
-                } else if (!std::strchr("\"\\/bfnrt", escape)) {
-                    return fail(std::string("bad escape '\\") + escape + "'", "a string");
+                continue;
+            }
+            ++at_;
+            if (atEnd()) break;
+            const char escape = peek();
+            if (escape == 'u') {
+                unsigned code = 0;
+                for (int i = 0; i < 4; ++i) {
+                    ++at_;
+                    if (atEnd()) return fail("", "a string");
+                    if (!std::isxdigit(static_cast<unsigned char>(peek())))
+                        return fail("bad \\u escape", "a string");
+                    code = code * 16 + unsigned(std::stoi(std::string(1, peek()), nullptr, 16));
                 }
+                if (out) appendUtf8(*out, code);
+            } else if (const char* known = std::strchr("\"\\/bfnrt", escape)) {
+                if (out) out->push_back("\"\\/\b\f\n\r\t"[known - "\"\\/bfnrt"]);
+            } else {
+                return fail(std::string("bad escape '\\") + escape + "'", "a string");
             }
             ++at_;
         }
         return fail("", "a string");
     }
 
-    // The strings of the (checked) value that starts at `from` and ends here, as written: the
-    // names of glTF's extension lists need no unescaping.
-    std::vector<std::string> strings(size_t from) const {
-        std::vector<std::string> out;
-        for (size_t i = from; i < at_; ++i) {
-            if (text_[i] != '"') continue;
-            const size_t end = text_.find('"', i + 1);
-            out.emplace_back(text_.substr(i + 1, end - i - 1));
-            i = end;
+    // A \uXXXX escape as UTF-8 (surrogate halves are kept one by one: names only need to compare
+    // equal with themselves).
+    static void appendUtf8(std::string& out, unsigned code) {
+        if (code < 0x80) {
+            out.push_back(char(code));
+        } else if (code < 0x800) {
+            out.push_back(char(0xC0 | (code >> 6)));
+            out.push_back(char(0x80 | (code & 0x3F)));
+        } else {
+            out.push_back(char(0xE0 | (code >> 12)));
+            out.push_back(char(0x80 | ((code >> 6) & 0x3F)));
+            out.push_back(char(0x80 | (code & 0x3F)));
         }
-        return out;
     }
 
     bool digits() {
@@ -197,7 +225,7 @@ private:
     }
 
     std::string_view text_;
-    GltfExtensions* extensions_;
+    JsonValue* root_;
     size_t at_ = 0;
     std::string error_;
 };
@@ -253,15 +281,103 @@ std::optional<std::string> jsonSyntaxError(std::string_view text) {
     return JsonChecker(text).check();
 }
 
-GltfExtensions gltfExtensions(std::string_view bytes) {
+const JsonValue* JsonValue::find(std::string_view key) const {
+    for (const auto& [name, member] : members) {
+        if (name == key) return &member;
+    }
+    return nullptr;
+}
+
+std::optional<JsonValue> parseJson(std::string_view text) {
+    JsonValue root;
+    if (JsonChecker(text, &root).check()) return std::nullopt;
+    return root;
+}
+
+std::optional<JsonValue> gltfJson(std::string_view bytes) {
     std::string_view json = bytes;
     if (bytes.substr(0, 4) == "glTF") {
-        if (glbError(bytes) || bytes.size() < 20) return {};
+        if (glbError(bytes) || bytes.size() < 20) return std::nullopt;
         json = bytes.substr(20, read32(bytes, 12));
     }
-    GltfExtensions extensions;
-    if (JsonChecker(json, &extensions).check()) return {};
-    return extensions;
+    return parseJson(json);
+}
+
+namespace {
+
+std::vector<std::string> strings(const JsonValue* list) {
+    std::vector<std::string> out;
+    if (!list) return out;
+    for (const JsonValue& item : list->items) {
+        if (item.type == JsonValue::Type::String) out.push_back(item.text);
+    }
+    return out;
+}
+
+// The index a member holds, or -1 when it is absent or not a non-negative integer.
+int indexOf(const JsonValue* value) {
+    if (!value || value->type != JsonValue::Type::Number || value->number < 0.0 ||
+        value->number != std::floor(value->number) || value->number > 1e9)
+        return -1;
+    return int(value->number);
+}
+
+const JsonValue* item(const JsonValue& document, std::string_view list, int index) {
+    const JsonValue* items = document.find(list);
+    if (!items || index < 0 || size_t(index) >= items->items.size()) return nullptr;
+    return &items->items[size_t(index)];
+}
+
+}  // namespace
+
+GltfExtensions gltfExtensions(std::string_view bytes) {
+    const std::optional<JsonValue> document = gltfJson(bytes);
+    if (!document) return {};
+    return {strings(document->find("extensionsUsed")),
+            strings(document->find("extensionsRequired"))};
+}
+
+std::vector<int> assimpMaterialOrder(const JsonValue& document) {
+    std::vector<int> order;
+    std::vector<bool> nodeRead, meshRead, materialRead;
+    auto mark = [](std::vector<bool>& read, int index) {
+        if (size_t(index) >= read.size()) read.resize(size_t(index) + 1, false);
+        const bool first = !read[size_t(index)];
+        read[size_t(index)] = true;
+        return first;
+    };
+    // Assimp reads a node's children before its mesh, and a mesh's primitives in order.
+    std::function<void(int, int)> readNode = [&](int index, int depth) {
+        const JsonValue* node = item(document, "nodes", index);
+        if (!node || depth > 256 || !mark(nodeRead, index)) return;
+        if (const JsonValue* children = node->find("children")) {
+            for (const JsonValue& child : children->items) readNode(indexOf(&child), depth + 1);
+        }
+        const int meshIndex = indexOf(node->find("mesh"));
+        const JsonValue* mesh = item(document, "meshes", meshIndex);
+        if (!mesh || !mark(meshRead, meshIndex)) return;
+        if (const JsonValue* primitives = mesh->find("primitives")) {
+            for (const JsonValue& primitive : primitives->items) {
+                const int material = indexOf(primitive.find("material"));
+                if (item(document, "materials", material) && mark(materialRead, material))
+                    order.push_back(material);
+            }
+        }
+    };
+    const JsonValue* sceneIndex = document.find("scene");
+    const JsonValue* scene = item(document, "scenes", sceneIndex ? indexOf(sceneIndex) : 0);
+    if (const JsonValue* roots = scene ? scene->find("nodes") : nullptr) {
+        for (const JsonValue& root : roots->items) readNode(indexOf(&root), 0);
+    }
+    return order;
+}
+
+std::optional<int> texCoordOverride(const JsonValue& textureInfo) {
+    const JsonValue* extensions = textureInfo.find("extensions");
+    const JsonValue* transform = extensions ? extensions->find("KHR_texture_transform") : nullptr;
+    const int set = transform ? indexOf(transform->find("texCoord")) : -1;
+    if (set < 0) return std::nullopt;
+    return set;
 }
 
 std::optional<std::string> gltfContainerError(std::string_view bytes) {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace pbr {
@@ -18,6 +19,34 @@ std::optional<std::string> jsonSyntaxError(std::string_view text);
 // Why the bytes of a glTF file (.gltf text or .glb binary, told apart by the GLB magic) cannot be
 // a glTF asset, or nullopt when the container is sound (the contents are Assimp's to judge).
 std::optional<std::string> gltfContainerError(std::string_view bytes);
+
+// A JSON value, as parsed: what the glTF loader reads itself where Assimp does not.
+struct JsonValue {
+    enum class Type { Null, Bool, Number, String, Array, Object };
+    Type type = Type::Null;
+    bool boolean = false;
+    double number = 0.0;
+    std::string text;                                        // a string's, unescaped
+    std::vector<JsonValue> items;                            // an array's
+    std::vector<std::pair<std::string, JsonValue>> members;  // an object's, in the file's order
+    // An object's member of that name (the first, as Assimp's reader takes it), or nullptr.
+    const JsonValue* find(std::string_view key) const;
+};
+
+// The value `text` holds, or nullopt when it is not well-formed JSON.
+std::optional<JsonValue> parseJson(std::string_view text);
+// The JSON of a glTF file (.gltf text, or a .glb's JSON chunk), or nullopt when unsound.
+std::optional<JsonValue> gltfJson(std::string_view bytes);
+
+// The indices of the file's materials in the order Assimp 5.2 lists them in aiScene: it reads a
+// material when a primitive first names it, walking the default scene's nodes depth first, a
+// node's children before its own mesh (its glTF dictionaries fill as they are read). Materials
+// no primitive of that scene names are not imported; Assimp appends a default one after these.
+std::vector<int> assimpMaterialOrder(const JsonValue& document);
+
+// KHR_texture_transform's `texCoord` of a textureInfo object (it overrides the textureInfo's
+// own; Assimp 5.2 ignores it), or nullopt when the transform does not set one.
+std::optional<int> texCoordOverride(const JsonValue& textureInfo);
 
 // The names in a glTF file's top-level "extensionsUsed" and "extensionsRequired" lists (empty
 // when absent, or when the container is not sound).

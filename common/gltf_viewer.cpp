@@ -43,6 +43,8 @@ void describe(const Model& model, bool punctual) {
                      joined(used).c_str());
     }
     if (const auto note = defaultMaterialNote(model)) std::fprintf(stderr, "%s\n", note->c_str());
+    for (const std::string& note : model.notes)
+        std::fprintf(stderr, "note: %s: %s\n", file.c_str(), note.c_str());
     if (punctual && model.lights.empty()) {
         std::fprintf(stderr, "note: %s: no KHR_lights_punctual lights; one default light\n",
                      file.c_str());
@@ -70,6 +72,9 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
                                      1e-4, 1e4));
     flags.push_back(FlagSpec::toggle("--no-ibl", "leave out the image-based light"));
     flags.push_back(FlagSpec::toggle("--no-punctual", "leave out the file's punctual lights"));
+    flags.push_back(FlagSpec::toggle("--single-scattering",
+                                     "image-based light without the multiple-scattering energy "
+                                     "(rough metals darken, as in 05)"));
     App app(argc, argv,
             {.name = config.name,
              .title = config.title,
@@ -94,6 +99,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     }
     shader.set("usePunctual", punctual ? 1 : 0);
     shader.set("useIbl", ibl ? 1 : 0);
+    shader.set("multipleScattering", app.options().has("--single-scattering") ? 0 : 1);
     shader.set("toneMapper", toneMapper);
     shader.set("exposure", exposure);
 

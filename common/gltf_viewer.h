@@ -2,7 +2,7 @@
 // The glTF samples' whole program (07 metallic-roughness, 08 specular-glossiness): a glTF file
 // drawn by GltfRenderer under 05's image-based light and the file's punctual lights, through an
 // orbit camera and a tone mapper, with the flags both samples share (--model, --hdr, --no-cache,
-// --tonemap, --exposure, --no-ibl, --no-punctual). A sample names itself and its default asset.
+// --tonemap, --exposure, --no-ibl, --no-punctual, --single-scattering). A sample names itself and its default asset.
 #include <filesystem>
 #include <string>
 

@@ -5,12 +5,13 @@
 #include <assimp/scene.h>
 
 #include <stb_image.h>
-#include <assimp/Importer.hpp>
 #include <algorithm>
+#include <assimp/Importer.hpp>
 #include <cctype>
 #include <cmath>
 #include <functional>
 #include <set>
+#include <type_traits>
 
 #include "error.h"
 #include "gltf_file.h"
@@ -70,8 +71,9 @@ struct Reader {
     // DESIGN.md, "glTF through Assimp 5.2").
     static void readSampler(const aiMaterial* material, aiTextureType type, TextureRef& ref) {
         auto wrap = [](int mode) {
-            return mode == aiTextureMapMode_Clamp ? 33071 : mode == aiTextureMapMode_Mirror ? 33648
-                                                                                           : 10497;
+            return mode == aiTextureMapMode_Clamp    ? 33071
+                   : mode == aiTextureMapMode_Mirror ? 33648
+                                                     : 10497;
         };
         int mode = aiTextureMapMode_Wrap;
         if (material->Get(AI_MATKEY_MAPPINGMODE_U(type, 0), mode) == AI_SUCCESS)
@@ -91,9 +93,9 @@ struct Reader {
             const float rotation = -uv.mRotation;
             const float c = std::cos(rotation), s = std::sin(rotation);
             const glm::vec2 scale(uv.mScaling.x, uv.mScaling.y);
-            const glm::vec2 offset(uv.mTranslation.x - 0.5f * scale.x * (1.0f - c + s),
-                                   0.5f * scale.y * (s + c - 1.0f) + 1.0f - scale.y -
-                                       uv.mTranslation.y);
+            const glm::vec2 offset(
+                uv.mTranslation.x - 0.5f * scale.x * (1.0f - c + s),
+                0.5f * scale.y * (s + c - 1.0f) + 1.0f - scale.y - uv.mTranslation.y);
             ref.transform = textureTransform(offset, rotation, scale);
         }
     }
@@ -236,6 +238,41 @@ struct Reader {
     }
 };
 
+// Gives every triangle of a mesh its own three vertices (points and lines are left as they are:
+// they are not drawn). Bones and morph targets are not carried over; they are not drawn either.
+void unweld(aiMesh* mesh) {
+    if (!(mesh->mPrimitiveTypes == aiPrimitiveType_TRIANGLE) || mesh->mNumFaces == 0) return;
+    const unsigned count = mesh->mNumFaces * 3;
+    auto remap = [&](auto*& data) {
+        if (!data) return;
+        using T = std::remove_reference_t<decltype(*data)>;
+        T* out = new T[count];
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            for (unsigned k = 0; k < 3; ++k) out[f * 3 + k] = data[mesh->mFaces[f].mIndices[k]];
+        }
+        delete[] data;
+        data = out;
+    };
+    remap(mesh->mVertices);
+    for (auto*& set : mesh->mTextureCoords) remap(set);
+    for (auto*& set : mesh->mColors) remap(set);
+    delete[] mesh->mTangents;
+    delete[] mesh->mBitangents;
+    mesh->mTangents = mesh->mBitangents = nullptr;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+        for (unsigned k = 0; k < 3; ++k) mesh->mFaces[f].mIndices[k] = f * 3 + k;
+    }
+    mesh->mNumVertices = count;
+    for (unsigned i = 0; i < mesh->mNumBones; ++i) delete mesh->mBones[i];
+    delete[] mesh->mBones;
+    mesh->mBones = nullptr;
+    mesh->mNumBones = 0;
+    for (unsigned i = 0; i < mesh->mNumAnimMeshes; ++i) delete mesh->mAnimMeshes[i];
+    delete[] mesh->mAnimMeshes;
+    mesh->mAnimMeshes = nullptr;
+    mesh->mNumAnimMeshes = 0;
+}
+
 // The global transform of a node: its own and its parents'.
 glm::mat4 globalTransform(const aiNode* node) {
     glm::mat4 transform(1.0f);
@@ -253,10 +290,17 @@ std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& w
         PunctualLight light;
         light.name = in->mName.C_Str();
         switch (in->mType) {
-            case aiLightSource_DIRECTIONAL: light.type = PunctualLight::Type::Directional; break;
-            case aiLightSource_POINT: light.type = PunctualLight::Type::Point; break;
-            case aiLightSource_SPOT: light.type = PunctualLight::Type::Spot; break;
-            default: continue;
+            case aiLightSource_DIRECTIONAL:
+                light.type = PunctualLight::Type::Directional;
+                break;
+            case aiLightSource_POINT:
+                light.type = PunctualLight::Type::Point;
+                break;
+            case aiLightSource_SPOT:
+                light.type = PunctualLight::Type::Spot;
+                break;
+            default:
+                continue;
         }
         light.color = {in->mColorDiffuse.r, in->mColorDiffuse.g, in->mColorDiffuse.b};
         glm::mat4 transform(1.0f);
@@ -264,15 +308,16 @@ std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& w
         if (node) {
             transform = globalTransform(node);
             float range = 0.0f;
-            if (node->mMetaData && node->mMetaData->Get("PBR_LightRange", range)) light.range = range;
+            if (node->mMetaData && node->mMetaData->Get("PBR_LightRange", range))
+                light.range = range;
         }
         const glm::vec3 position(in->mPosition.x, in->mPosition.y, in->mPosition.z);
         const glm::vec3 direction(in->mDirection.x, in->mDirection.y, in->mDirection.z);
         light.position = glm::vec3(transform * glm::vec4(position, 1.0f));
         // a point light shines every way (Assimp gives it no direction)
-        light.direction = glm::mat3(transform) * (light.type == PunctualLight::Type::Point
-                                                      ? glm::vec3(0.0f, 0.0f, -1.0f)
-                                                      : direction);
+        light.direction =
+            glm::mat3(transform) *
+            (light.type == PunctualLight::Type::Point ? glm::vec3(0.0f, 0.0f, -1.0f) : direction);
         const float length = glm::length(light.direction);
         if (!std::isfinite(length) || length < 1e-12f ||
             !std::isfinite(glm::dot(light.position, light.position)) ||
@@ -289,6 +334,55 @@ std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& w
     return lights;
 }
 
+// KHR_texture_transform's texCoord, which Assimp 5.2 drops: it overrides the textureInfo's
+// texture coordinate set. Assimp's materials are matched with the file's by the order it reads
+// them in (assimpMaterialOrder), checked against their names; where they do not match, the
+// overrides are left out, saying so.
+void applyTexCoordOverrides(const JsonValue& document, std::vector<Material>& materials,
+                            std::vector<std::string>& notes) {
+    const JsonValue* list = document.find("materials");
+    if (!list) return;
+    const std::vector<int> order = assimpMaterialOrder(document);
+    auto nameOf = [&](int index) {
+        const JsonValue* name = list->items[size_t(index)].find("name");
+        return name && name->type == JsonValue::Type::String ? name->text : std::string();
+    };
+    const size_t imported = materials.size() - (materials.back().gltfDefault ? 1 : 0);
+    bool matched = order.size() == imported;
+    for (size_t i = 0; matched && i < order.size(); ++i)
+        matched = nameOf(order[i]) == materials[i].name;
+    if (!matched) {
+        notes.push_back(
+            "the file's materials could not be matched with Assimp's; any "
+            "KHR_texture_transform texCoord is ignored");
+        return;
+    }
+    for (size_t i = 0; i < order.size(); ++i) {
+        const JsonValue& in = list->items[size_t(order[i])];
+        Material& out = materials[i];
+        auto apply = [](const JsonValue* textureInfo, TextureRef& ref) {
+            if (!textureInfo || !ref.present()) return;
+            if (const auto set = texCoordOverride(*textureInfo)) ref.uvSet = *set;
+        };
+        const JsonValue* pbr = in.find("pbrMetallicRoughness");
+        const JsonValue* extensions = in.find("extensions");
+        const JsonValue* specGloss =
+            extensions ? extensions->find("KHR_materials_pbrSpecularGlossiness") : nullptr;
+        if (out.specularGlossiness) {
+            apply(specGloss ? specGloss->find("diffuseTexture") : nullptr, out.baseColorTexture);
+            apply(specGloss ? specGloss->find("specularGlossinessTexture") : nullptr,
+                  out.specularGlossinessTexture);
+        } else {
+            apply(pbr ? pbr->find("baseColorTexture") : nullptr, out.baseColorTexture);
+            apply(pbr ? pbr->find("metallicRoughnessTexture") : nullptr,
+                  out.metallicRoughnessTexture);
+        }
+        apply(in.find("normalTexture"), out.normalTexture);
+        apply(in.find("occlusionTexture"), out.occlusionTexture);
+        apply(in.find("emissiveTexture"), out.emissiveTexture);
+    }
+}
+
 }  // namespace
 
 std::optional<std::string> defaultMaterialNote(const Model& model) {
@@ -302,7 +396,10 @@ std::optional<std::string> defaultMaterialNote(const Model& model) {
 glm::mat3 textureTransform(const glm::vec2& offset, float rotation, const glm::vec2& scale) {
     const float c = std::cos(rotation), s = std::sin(rotation);
     const glm::mat3 translation(1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, offset.x, offset.y, 1.0f);
-    const glm::mat3 rotate(c, s, 0.0f, -s, c, 0.0f, 0.0f, 0.0f, 1.0f);
+    // u' = c u + s v, v' = -s u + c v, as the extension's example, its TextureTransformTest model,
+    // three.js, Babylon.js and Khronos' sample viewer turn it. (The GLSL listing in the
+    // extension's README has the transpose, a known erratum: KhronosGroup/glTF issue 1563.)
+    const glm::mat3 rotate(c, -s, 0.0f, s, c, 0.0f, 0.0f, 0.0f, 1.0f);
     const glm::mat3 scaling(scale.x, 0.0f, 0.0f, 0.0f, scale.y, 0.0f, 0.0f, 0.0f, 1.0f);
     return translation * rotate * scaling;
 }
@@ -311,9 +408,9 @@ std::vector<std::string> extensionsNotDrawn(const Model& model,
                                             const std::vector<std::string>& drawn, bool required) {
     std::vector<std::string> out;
     for (const std::string& name : required ? model.extensionsRequired : model.extensionsUsed) {
-        const bool isRequired = std::find(model.extensionsRequired.begin(),
-                                          model.extensionsRequired.end(), name) !=
-                                model.extensionsRequired.end();
+        const bool isRequired =
+            std::find(model.extensionsRequired.begin(), model.extensionsRequired.end(), name) !=
+            model.extensionsRequired.end();
         if (!required && isRequired) continue;  // listed with the required ones
         if (std::find(drawn.begin(), drawn.end(), name) == drawn.end()) out.push_back(name);
     }
@@ -328,6 +425,7 @@ Model loadModel(const fs::path& file) {
     const std::string where = displayPath(file) + ": ";
     bool isGltf = false;
     std::vector<std::string> extensionsUsed, extensionsRequired;
+    std::optional<JsonValue> document;  // a glTF file's JSON, for what Assimp does not read
     {
         // Assimp's answer to a broken glTF container is "no suitable reader": say what is wrong.
         std::string extension = file.extension().string();
@@ -345,14 +443,22 @@ Model loadModel(const fs::path& file) {
             GltfExtensions extensions = gltfExtensions(bytes);
             extensionsUsed = std::move(extensions.used);
             extensionsRequired = std::move(extensions.required);
+            document = gltfJson(bytes);
         }
     }
 
     Assimp::Importer importer;
     const aiScene* scene =
-        importer.ReadFile(utf8Path(file), aiProcess_Triangulate | aiProcess_GenSmoothNormals |
-                                              aiProcess_CalcTangentSpace | aiProcess_SortByPType |
+        importer.ReadFile(utf8Path(file), aiProcess_Triangulate | aiProcess_SortByPType |
                                               aiProcess_ValidateDataStructure);
+    if (scene) {
+        // glTF 3.7.2.1: a primitive without NORMAL gets flat normals. Assimp's flat normals
+        // are one per vertex, so the triangles of such a mesh stop sharing vertices first.
+        for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+            if (!scene->mMeshes[i]->mNormals) unweld(scene->mMeshes[i]);
+        }
+        scene = importer.ApplyPostProcessing(aiProcess_GenNormals | aiProcess_CalcTangentSpace);
+    }
     if (!scene) {
         std::string reason = importer.GetErrorString();
         while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' '))
@@ -395,6 +501,7 @@ Model loadModel(const fs::path& file) {
     if (isGltf && !model.materials.empty() && model.materials.back().name.empty()) {
         model.materials.back().gltfDefault = true;
     }
+    if (document) applyTexCoordOverrides(*document, model.materials, model.notes);
     std::set<const aiNode*> seen;
     reader.visit(scene->mRootNode, glm::mat4(1.0f), 0, seen);
     if (model.primitives.empty()) throw Error(where + "no triangles to draw");
@@ -437,15 +544,19 @@ Image loadTextureImage(const Model& model, const TextureRef& ref, int wantChanne
 
 GpuModel::GpuModel(const Model& model) {
     auto upload = [&](const TextureRef& ref, ColorSpace colorSpace) {
-        if (!ref.present() || textures_.count({ref, colorSpace})) return;
-        Image image;
-        try {
-            image = loadTextureImage(model, ref);
-        } catch (const Error& e) {
-            if (ref.embedded >= 0) throw;  // the message names the model already
-            throw Error(displayPath(model.file) + ": texture " + e.what());
+        if (!ref.present()) return;
+        // One texture per image and colour space, one sampler per glTF sampler: two textures
+        // sharing an image may still sample it differently (NEAREST and LINEAR, say).
+        if (!textures_.count({ref, colorSpace})) {
+            Image image;
+            try {
+                image = loadTextureImage(model, ref);
+            } catch (const Error& e) {
+                if (ref.embedded >= 0) throw;  // the message names the model already
+                throw Error(displayPath(model.file) + ": texture " + e.what());
+            }
+            textures_[{ref, colorSpace}] = std::make_unique<Texture2D>(image, colorSpace);
         }
-        textures_[{ref, colorSpace}] = std::make_unique<Texture2D>(image, colorSpace);
         const std::tuple key{ref.wrapS, ref.wrapT, ref.magFilter, ref.minFilter};
         if (samplers_.count(key)) return;
         GlSampler sampler;

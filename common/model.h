@@ -24,7 +24,7 @@ namespace pbr {
 struct TextureRef {
     std::filesystem::path file;  // absolute; empty when embedded or absent
     int embedded = -1;           // index into Model::embeddedImages, or -1
-    int uvSet = 0;  // TEXCOORD_0 or TEXCOORD_1
+    int uvSet = 0;               // TEXCOORD_0 or TEXCOORD_1
     // The glTF sampler, in its own numbers (which are GL's enums): wrap 10497 REPEAT, 33071
     // CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT; filters 9728 NEAREST, 9729 LINEAR, 9984-9987 the
     // mipmapped ones, 0 where the file leaves them to the renderer.
@@ -92,6 +92,7 @@ struct Model {
     std::vector<PunctualLight> lights;           // KHR_lights_punctual, placed by their nodes
     // The file's top-level extension lists (glTF only), so a renderer can say what it ignores.
     std::vector<std::string> extensionsUsed, extensionsRequired;
+    std::vector<std::string> notes;  // what the loader could not honour, for the sample to say
 };
 
 // The note a sample prints when primitives fall back to glTF's default material, or nullopt:
@@ -99,7 +100,8 @@ struct Model {
 //   colour white, metallic 1, roughness 1)"
 std::optional<std::string> defaultMaterialNote(const Model& model);
 
-// KHR_texture_transform's matrix: translation x rotation x scale (the extension's order).
+// KHR_texture_transform's matrix: translation x rotation x scale (the extension's order), the
+// rotation as the extension's example and TextureTransformTest model turn it (see model.cpp).
 glm::mat3 textureTransform(const glm::vec2& offset, float rotation, const glm::vec2& scale);
 
 // The extensions a glTF file uses (or, `required`, requires) that are not in `drawn`: what a

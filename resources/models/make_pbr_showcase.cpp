@@ -70,8 +70,8 @@ namespace {
 namespace fs = std::filesystem;
 namespace gltf = pbr::gltf;
 using gltf::quoted;
-using gltf::vec;
 using gltf::rotation;
+using gltf::vec;
 using pbr::Image;
 using pbr::MeshData;
 using pbr::procedural::Field;
@@ -351,9 +351,11 @@ Image paneColor() {
     });
 }
 
-// The label's texture transform (KHR_texture_transform: uv' = T R S uv, R rotating by +rotation
-// as the extension's matrix has it), and the label as it must look: 2:1, "PBR 07".
-constexpr glm::vec2 kLabelOffset(0.7f, 0.05f), kLabelScale(0.9f, 0.45f);
+// The label's texture transform (KHR_texture_transform: uv' = T R S uv with R(u, v) = (c u + s v,
+// -s u + c v), as the extension's example, its TextureTransformTest model and Khronos' sample
+// viewer turn it; not the transpose that the extension's GLSL listing prints), and the label as
+// it must look: 2:1, "PBR 07".
+constexpr glm::vec2 kLabelOffset(0.25f, 0.95f), kLabelScale(0.9f, 0.45f);
 constexpr float kLabelRotation = kPi / 2.0f;
 
 glm::vec3 labelLook(float u, float v) {  // u across, v down, both 0..1
@@ -387,7 +389,7 @@ Image labelColor() {
     return makeImage(256, 3, [&](int x, int y) {
         const glm::vec2 image((float(x) + 0.5f) / 256.0f, (float(y) + 0.5f) / 256.0f);
         const glm::vec2 d = image - kLabelOffset;
-        const glm::vec2 uv = glm::vec2(c * d.x + s * d.y, -s * d.x + c * d.y) / kLabelScale;
+        const glm::vec2 uv = glm::vec2(c * d.x - s * d.y, s * d.x + c * d.y) / kLabelScale;
         if (uv.x < -0.015f || uv.x > 1.015f || uv.y < -0.015f || uv.y > 1.015f) {
             return (x + y) % 16 < 8 ? glm::vec4(0.9f, 0.0f, 0.8f, 1.0f) : glm::vec4(0, 0, 0, 1);
         }

@@ -39,11 +39,13 @@ void main()
             {
                 vec3 L;
                 vec3 radiance = punctualRadiance(i, WorldPos, L);
-                color += gltfDirectLight(m.N, V, L, radiance, m.diffuseColor, m.F0, m.roughness);
+                color += gltfDirectLight(m.N, V, L, radiance, m.diffuseColor, m.F0, m.baseColor,
+                                         m.metallic, m.roughness);
             }
         }
         if (useIbl)
-            color += ambientLightGltf(m.N, V, m.diffuseColor, m.F0, m.roughness) * m.occlusion;
+            color += ambientLightGltf(m.N, V, m.diffuseColor, m.F0, m.baseColor, m.metallic,
+                                      m.roughness) * m.occlusion;
     }
     FragColor = vec4(toneMap(color, toneMapper, exposure), m.alpha);
 }

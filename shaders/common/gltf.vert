@@ -23,7 +23,10 @@ void main()
 {
     WorldPos = vec3(model * vec4(aPos, 1.0));
     Normal = normalMatrix * aNormal;
-    Tangent = vec4(mat3(model) * aTangent.xyz, aTangent.w);
+    // A mirroring transform (negative determinant) turns the bitangent cross(N, T) around:
+    // the handedness turns with it, or a normal map's green would point the wrong way.
+    float mirrored = determinant(mat3(model)) < 0.0 ? -1.0 : 1.0;
+    Tangent = vec4(mat3(model) * aTangent.xyz, aTangent.w * mirrored);
     TexCoords0 = aTexCoords0;
     TexCoords1 = aTexCoords1;
     VertexColor = aColor;

@@ -64,11 +64,16 @@ vec3 directLight(vec3 N, vec3 V, vec3 L, vec3 radiance, vec3 albedo, float metal
 
 // ---- glTF 2.0, Appendix B (the material the glTF samples 07 and 08 draw) ----
 // Mirrored on the CPU by pbr::cpu::gltfDirectLight. The specification's BRDF differs from the
-// text's above in two places: alpha = roughness^2 enters a height-correlated Smith visibility V
-// (the masking-shadowing G divided by 4 NdotL NdotV), and the diffuse lobe is weighted by 1 - F
-// of the same half vector. Its "implementation" form (B.3.5) takes a material as two colours,
-// which is what lets the metallic-roughness and specular-glossiness workflows share one path:
-//   f_diffuse = (1 - F) c_diff / pi,  f_specular = F D V,  F = F0 + (1 - F0) (1 - VdotH)^5.
+// text's above in three places: alpha = roughness^2 enters a height-correlated Smith visibility V
+// (the masking-shadowing G divided by 4 NdotL NdotV); the diffuse lobe is weighted by 1 - F of the
+// same half vector; and metallic does not blend colours, it blends two whole BRDFs (B.3.5):
+//   dielectric = (1 - F_dielectric) c_diff / pi + F_dielectric D V,   F_dielectric from F0
+//   metal      = F_metal D V,                                         F_metal from metalColor
+//   f          = mix(dielectric, metal, metallic),    F(x) = x + (1 - x) (1 - VdotH)^5
+// So at metallic 0.5 the diffuse keeps half of the dielectric's, not half of (1 - F) of a
+// half-metal F0 (the simplified "c_diff = lerp(base, black, metallic)" that the specification
+// dropped in 2024). A metallic-roughness material is F0 = 0.04, c_diff = metalColor = base
+// colour; a specular-glossiness one is metallic 0 with its own c_diff and F0.
 
 // GGX / Trowbridge-Reitz with alpha = roughness^2.
 float D_GGX(float NdotH, float alpha)
@@ -93,9 +98,10 @@ float V_GGX(float NdotL, float NdotV, float alpha)
 const float MIN_GGX_ALPHA = 0.002;
 
 // Radiance towards V from light arriving along L with `radiance`, for a surface given as its
-// diffuse colour c_diff and its reflectance at normal incidence F0.
+// dielectric layer (diffuse colour c_diff under a specular layer of reflectance F0 at normal
+// incidence), its metal's colour, and how metallic it is.
 vec3 gltfDirectLight(vec3 N, vec3 V, vec3 L, vec3 radiance, vec3 diffuseColor, vec3 F0,
-                     float roughness)
+                     vec3 metalColor, float metallic, float roughness)
 {
     float NdotL = clamp(dot(N, L), 0.0, 1.0);
     if (NdotL <= 0.0)
@@ -105,8 +111,11 @@ vec3 gltfDirectLight(vec3 N, vec3 V, vec3 L, vec3 radiance, vec3 diffuseColor, v
     float NdotH = clamp(dot(N, H), 0.0, 1.0);
     float VdotH = clamp(dot(V, H), 0.0, 1.0);
     float alpha = max(roughness * roughness, MIN_GGX_ALPHA);
-    vec3 F = F0 + (1.0 - F0) * pow(1.0 - VdotH, 5.0);
-    vec3 diffuse = (1.0 - F) * diffuseColor / PI;
-    vec3 specular = F * D_GGX(NdotH, alpha) * V_GGX(NdotL, NdotV, alpha);
+    float schlick = pow(1.0 - VdotH, 5.0);
+    vec3 dielectricF = F0 + (1.0 - F0) * schlick;
+    vec3 metalF = metalColor + (1.0 - metalColor) * schlick;
+    vec3 diffuse = (1.0 - metallic) * (1.0 - dielectricF) * diffuseColor / PI;
+    vec3 specular = mix(dielectricF, metalF, metallic) * D_GGX(NdotH, alpha) *
+                    V_GGX(NdotL, NdotV, alpha);
     return (diffuse + specular) * radiance * NdotL;
 }

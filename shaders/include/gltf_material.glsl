@@ -57,8 +57,9 @@ uniform bool unlit;  // KHR_materials_unlit: the base colour is the result
 struct SurfaceMaterial
 {
     vec3 baseColor;     // linear: what an unlit material shows
-    vec3 diffuseColor;  // c_diff of the Appendix B implementation
-    vec3 F0;            // reflectance at normal incidence
+    vec3 diffuseColor;  // c_diff: the dielectric's diffuse colour
+    vec3 F0;            // the dielectric's reflectance at normal incidence
+    float metallic;     // how much of the metal BRDF (of colour baseColor) is mixed in
     float roughness;    // perceptual; alpha = roughness^2
     float alpha;        // opacity (1 unless BLEND)
     float occlusion;    // 1 - strength + strength x texture: scales indirect light only
@@ -107,16 +108,18 @@ SurfaceMaterial readGltfMaterial()
         m.F0 = specular;
         m.roughness = clamp(1.0 - glossinessFactor * sg.a, 0.0, 1.0);
         m.diffuseColor = base.rgb * (1.0 - max(specular.r, max(specular.g, specular.b)));
+        m.metallic = 0.0;
     }
     else
     {
-        // Appendix B: c_diff = lerp(base, black, metallic), F0 = lerp(0.04, base, metallic)
+        // Appendix B: a dielectric (F0 0.04 over a diffuse base colour) and a metal (of the
+        // base colour) mixed by metallic
         vec4 mr = texture(metallicRoughnessTexture,
                           textureUv(metallicRoughnessUvSet, metallicRoughnessUvTransform));
-        float metallic = clamp(metallicFactor * mr.b, 0.0, 1.0);
+        m.metallic = clamp(metallicFactor * mr.b, 0.0, 1.0);
         m.roughness = clamp(roughnessFactor * mr.g, 0.0, 1.0);
-        m.diffuseColor = base.rgb * (1.0 - metallic);
-        m.F0 = mix(vec3(0.04), base.rgb, metallic);
+        m.diffuseColor = base.rgb;
+        m.F0 = vec3(0.04);
     }
 
     float ao = texture(occlusionTexture, textureUv(occlusionUvSet, occlusionUvTransform)).r;

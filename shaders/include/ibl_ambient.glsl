@@ -84,13 +84,47 @@ vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, 
     return (kD * diffuse + specular) * ao;
 }
 
-// The exact split sum for a material given as its diffuse colour c_diff and F0 (the glTF
-// samples): the lobe reflects E = F0 scale + bias of the environment, and the diffuse layer gets
-// what it leaves, 1 - E, the image-based counterpart of the direct light's 1 - F. For a metallic
-// 0 or 1 material this is the exactSplitSum form above. Occlusion is the caller's.
-vec3 ambientLightGltf(vec3 N, vec3 V, vec3 diffuseColor, vec3 F0, float roughness)
+// The glTF samples' image-based light: the exact split sum above for the specification's mix of
+// a dielectric and a metal BRDF (brdf.glsl, gltfDirectLight), with or without the energy that the
+// single-scattering lobe loses to light bouncing between microfacets more than once.
+//
+// Single scattering: a lobe of reflectance F0 reflects E_ss = F0 scale + bias of the environment
+// (the LUT's directional albedo), and a dielectric's diffuse layer gets what it leaves, 1 - E_ss.
+// A white metal then returns only scale + bias of a white environment: 0.89 at roughness 0.5,
+// 0.31 at roughness 1.
+// Multiple scattering (Fdez-Aguera, "A Multiple-Scattering Microfacet Model for Real-Time
+// Image-based Lighting", JCGT 2019), the specification's recommendation: the lost share of a
+// white lobe, E_ms = 1 - (scale + bias), comes back after further bounces, each tinted by the
+// average Fresnel F_avg = F0 + (1 - F0) / 21, a geometric series:
+//   E_ms(F0) = E_ms F_avg E_ss(F0) / (1 - F_avg E_ms),
+// spread over the hemisphere (so lit by the irradiance, not the prefiltered lobe). A white metal
+// in a white furnace returns the environment exactly, at every roughness.
+uniform bool multipleScattering;
+
+// The radiance a lobe of reflectance F0 returns: single-scattered from the prefiltered
+// environment, multiple-scattered (when on) from the irradiance; `albedo` gets the whole share.
+vec3 specularIbl(vec3 F0, SplitSumReads s, out vec3 albedo)
+{
+    vec3 single = F0 * s.envBRDF.x + s.envBRDF.y;
+    vec3 multiple = vec3(0.0);
+    if (multipleScattering)
+    {
+        float lost = 1.0 - (s.envBRDF.x + s.envBRDF.y);
+        vec3 averageF = F0 + (1.0 - F0) / 21.0;
+        multiple = lost * averageF * single / (1.0 - averageF * lost);
+    }
+    albedo = single + multiple;
+    return single * s.prefilteredColor + multiple * s.irradiance;
+}
+
+// c_diff, F0 and metalColor as gltfDirectLight takes them. Occlusion is the caller's.
+vec3 ambientLightGltf(vec3 N, vec3 V, vec3 diffuseColor, vec3 F0, vec3 metalColor, float metallic,
+                      float roughness)
 {
     SplitSumReads s = readSplitSum(N, V, roughness);
-    vec3 E = F0 * s.envBRDF.x + s.envBRDF.y;
-    return diffuseColor * s.irradiance * (1.0 - E) + s.prefilteredColor * E;
+    vec3 dielectricAlbedo, metalAlbedo;
+    vec3 dielectricSpecular = specularIbl(F0, s, dielectricAlbedo);
+    vec3 metal = specularIbl(metalColor, s, metalAlbedo);
+    vec3 dielectric = diffuseColor * s.irradiance * (1.0 - dielectricAlbedo) + dielectricSpecular;
+    return mix(dielectric, metal, metallic);
 }

@@ -72,6 +72,11 @@ std::vector<GoldenCase> goldenCases() {
                          "07_gltf_metallic_roughness",
                          {"--tonemap", mapper, "--size", "480x270", "--camera", "0,2.2,5.5"}});
     }
+    // Beside the default (07_tonemap_khronos_neutral, multiple scattering): single scattering,
+    // where rough metals darken (07's README shows both).
+    cases.push_back({"07_single_scattering",
+                     "07_gltf_metallic_roughness",
+                     {"--single-scattering", "--size", "480x270", "--camera", "0,2.2,5.5"}});
     // The other four material sets, each on the tutorial's close-up view, at a small size.
     for (const char* set : {"gold", "grass", "plastic", "wall"}) {
         cases.push_back({std::string("02_") + set,
