@@ -5,8 +5,14 @@
 // upright, as seen from +Z) and TEXCOORD_1 = TEXCOORD_0 / 2. Its buffer is embedded as a data URI.
 // Two more accessors for primitives that ask for them: the uvs mirrored in u ((h - x) / 2h,
 // (h - y) / 2h) and a TANGENT (0, -1, 0, -1) at every corner.
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gltf_file.h"
 
 namespace pbr::test {
 
@@ -21,5 +27,58 @@ std::string squarePrimitiveJson(int material);
 // Writes `json` to dir/name and returns the path.
 std::filesystem::path writeTextFile(const std::filesystem::path& dir, const std::string& name,
                                     const std::string& json);
+
+// ---- Arbitrary meshes and JSON written back (the scene-graph tests,
+// tests/reference/scene_graph_test.cpp) ----
+
+// One triangle mesh as plain arrays: every vertex has a position, a normal, a TEXCOORD_0 and a
+// TANGENT (xyz along +u, w the handedness, as glTF has it).
+struct GltfMeshArrays {
+    std::vector<glm::vec3> positions, normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<glm::vec4> tangents;
+    std::vector<std::uint32_t> indices;
+};
+
+// The "buffers", "bufferViews" and "accessors" members (with a trailing comma) for `meshes` in one
+// embedded buffer: mesh i has accessors 5i POSITION (with min and max), 5i + 1 NORMAL, 5i + 2
+// TEXCOORD_0, 5i + 3 TANGENT, 5i + 4 its indices (unsigned int).
+std::string meshBuffersJson(const std::vector<GltfMeshArrays>& meshes);
+
+// A primitive drawing mesh i of meshBuffersJson with `material`.
+std::string meshPrimitiveJson(int mesh, int material);
+
+// A glTF matrix, column-major, as the JSON array a node's "matrix" holds (17 significant digits).
+std::string matrixJson(const glm::dmat4& matrix);
+
+// A parsed JSON value written back as JSON text (numbers with 17 significant digits, so a
+// document read with parseJson and written back holds the same values).
+std::string jsonText(const JsonValue& value);
+
+}  // namespace pbr::test
+
+// ---- Additions for tests/khronos (the Khronos glTF Sample Viewer as a reference) --------------
+// A glTF file's binary data built up accessor by accessor, each in a bufferView of its own, the
+// buffer embedded as a data URI (as squareBuffersJson's), for meshes a test shapes itself.
+#include <cstdint>
+#include <vector>
+
+namespace pbr::test {
+
+class GltfBufferBuilder {
+public:
+    // A float accessor of `type` ("SCALAR", "VEC2", "VEC3", "VEC4"); a POSITION accessor needs
+    // `bounds` (min and max). Returns its index.
+    int floats(const std::vector<float>& values, const std::string& type, bool bounds = false);
+    // An unsigned-short index accessor; returns its index.
+    int indices(const std::vector<std::uint16_t>& values);
+    // The "buffers", "bufferViews" and "accessors" members, with a trailing comma.
+    std::string json() const;
+
+private:
+    std::vector<std::uint8_t> bytes_;
+    std::string views_, accessors_;
+    int count_ = 0;
+};
 
 }  // namespace pbr::test
