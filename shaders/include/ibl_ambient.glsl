@@ -90,8 +90,8 @@ vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, 
 //
 // Single scattering: a lobe of reflectance F0 reflects E_ss = F0 scale + bias of the environment
 // (the LUT's directional albedo), and a dielectric's diffuse layer gets what it leaves, 1 - E_ss.
-// A white metal then returns only scale + bias of a white environment: 0.89 at roughness 0.5,
-// 0.31 at roughness 1.
+// A white metal then returns only scale + bias of a white environment: facing the viewer, 0.89
+// of it at roughness 0.5, 0.31 at roughness 1.
 // Multiple scattering (Fdez-Aguera, "A Multiple-Scattering Microfacet Model for Real-Time
 // Image-based Lighting", JCGT 2019), the specification's recommendation: the lost share of a
 // white lobe, E_ms = 1 - (scale + bias), comes back after further bounces, each tinted by the

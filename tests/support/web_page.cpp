@@ -99,3 +99,15 @@ PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
 }
 
 }  // namespace pbr::test
+
+// ---- Additions for tests/khronos (see web_page.h) -----------------------------------------------
+namespace pbr::test {
+
+std::optional<std::filesystem::path> chromiumOnPath() {
+    return chromium();
+}
+std::optional<std::filesystem::path> nodeOnPath() {
+    return node();
+}
+
+}  // namespace pbr::test

@@ -34,3 +34,13 @@ PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
                 const std::filesystem::path& dir, const std::string& input = "");
 
 }  // namespace pbr::test
+
+// ---- Additions for tests/khronos
+// -----------------------------------------------------------------
+namespace pbr::test {
+
+// The browser (chromium-headless-shell, else chromium) and node on PATH, when there.
+std::optional<std::filesystem::path> chromiumOnPath();
+std::optional<std::filesystem::path> nodeOnPath();
+
+}  // namespace pbr::test
