@@ -338,10 +338,22 @@ std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& w
 // texture coordinate set. Assimp's materials are matched with the file's by the order it reads
 // them in (assimpMaterialOrder), checked against their names; where they do not match, the
 // overrides are left out, saying so.
+// Whether a JSON value holds a KHR_texture_transform that sets texCoord.
+bool setsTexCoord(const JsonValue& value) {
+    for (const auto& [name, member] : value.members) {
+        if ((name == "KHR_texture_transform" && member.find("texCoord")) || setsTexCoord(member))
+            return true;
+    }
+    for (const JsonValue& item : value.items) {
+        if (setsTexCoord(item)) return true;
+    }
+    return false;
+}
+
 void applyTexCoordOverrides(const JsonValue& document, std::vector<Material>& materials,
                             std::vector<std::string>& notes) {
     const JsonValue* list = document.find("materials");
-    if (!list) return;
+    if (!list || materials.empty() || !setsTexCoord(*list)) return;
     const std::vector<int> order = assimpMaterialOrder(document);
     auto nameOf = [&](int index) {
         const JsonValue* name = list->items[size_t(index)].find("name");
@@ -353,8 +365,8 @@ void applyTexCoordOverrides(const JsonValue& document, std::vector<Material>& ma
         matched = nameOf(order[i]) == materials[i].name;
     if (!matched) {
         notes.push_back(
-            "the file's materials could not be matched with Assimp's; any "
-            "KHR_texture_transform texCoord is ignored");
+            "the file's materials could not be matched with Assimp's; KHR_texture_transform's "
+            "texCoord is ignored");
         return;
     }
     for (size_t i = 0; i < order.size(); ++i) {

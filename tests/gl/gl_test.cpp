@@ -511,33 +511,11 @@ public:
     void forEachPixel(
         const std::vector<float>& pixels,
         const std::function<void(int row, int col, double NdotV, const float* rgba)>& visit) const {
-        const double tanHalf = std::tan(kFovY / 2.0), aspect = double(kWidth) / kHeight;
-        for (int py = 0; py < kHeight; ++py) {
-            for (int px = 0; px < kWidth; ++px) {
-                const glm::dvec3 ray =
-                    glm::normalize(glm::dvec3((2.0 * (px + 0.5) / kWidth - 1.0) * tanHalf * aspect,
-                                              (2.0 * (py + 0.5) / kHeight - 1.0) * tanHalf, -1.0));
-                double nearest = 1e9;
-                int row = -1, col = -1;
-                for (int r = 0; r < 2; ++r) {
-                    for (int c = 0; c < kColumns; ++c) {
-                        const glm::dvec3 oc = kCamera - centre(r, c);
-                        const double b = glm::dot(oc, ray), d = b * b - glm::dot(oc, oc) + 1.0;
-                        if (d > 0.0 && -b - std::sqrt(d) < nearest) {
-                            nearest = -b - std::sqrt(d);
-                            row = r;
-                            col = c;
-                        }
-                    }
-                }
-                if (row < 0) continue;
-                const glm::dvec3 N = glm::normalize(kCamera + ray * nearest - centre(row, col));
-                const double NdotV = glm::dot(N, -ray);
-                if (NdotV < 0.15) continue;
-                const float* rgba = &pixels[(size_t(py) * kWidth + size_t(px)) * 4];
-                ASSERT_EQ(rgba[3], 1.0f) << "no sphere drawn at pixel " << px << ", " << py;
-                visit(row, col, NdotV, rgba);
-            }
+        for (const Hit& hit : hits_) {
+            const float* rgba = &pixels[hit.pixel * 4];
+            ASSERT_EQ(rgba[3], 1.0f)
+                << "no sphere drawn at pixel " << hit.pixel % kWidth << ", " << hit.pixel / kWidth;
+            visit(hit.row, hit.col, hit.NdotV, rgba);
         }
     }
 
@@ -563,6 +541,44 @@ private:
         return glm::dvec3((col - kColumns / 2) * 2.2, row == 1 ? 1.25 : -1.25, 0.0);
     }
 
+    // The pixels' rays against the spheres, worked out once.
+    struct Hit {
+        size_t pixel;
+        int row, col;
+        double NdotV;
+    };
+    static std::vector<Hit> traceHits() {
+        std::vector<Hit> hits;
+        const double tanHalf = std::tan(kFovY / 2.0), aspect = double(kWidth) / kHeight;
+        for (int py = 0; py < kHeight; ++py) {
+            for (int px = 0; px < kWidth; ++px) {
+                const glm::dvec3 ray =
+                    glm::normalize(glm::dvec3((2.0 * (px + 0.5) / kWidth - 1.0) * tanHalf * aspect,
+                                              (2.0 * (py + 0.5) / kHeight - 1.0) * tanHalf, -1.0));
+                double nearest = 1e9;
+                int row = -1, col = -1;
+                for (int r = 0; r < 2; ++r) {
+                    for (int c = 0; c < kColumns; ++c) {
+                        const glm::dvec3 oc = kCamera - centre(r, c);
+                        const double b = glm::dot(oc, ray), d = b * b - glm::dot(oc, oc) + 1.0;
+                        if (d > 0.0 && -b - std::sqrt(d) < nearest) {
+                            nearest = -b - std::sqrt(d);
+                            row = r;
+                            col = c;
+                        }
+                    }
+                }
+                if (row < 0) continue;
+                const glm::dvec3 N = glm::normalize(kCamera + ray * nearest - centre(row, col));
+                const double NdotV = glm::dot(N, -ray);
+                if (NdotV >= 0.15)
+                    hits.push_back({size_t(py) * kWidth + size_t(px), row, col, NdotV});
+            }
+        }
+        return hits;
+    }
+
+    std::vector<Hit> hits_ = traceHits();
     Texture2D white_;
     TextureCube environment_, irradiance_, prefiltered_;
     Texture2D lut_;

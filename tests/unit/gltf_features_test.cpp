@@ -17,6 +17,7 @@
 #include "support/test_data.h"
 
 #include "error.h"
+#include "gltf_file.h"
 #include "image.h"
 #include "model.h"
 #include "paths.h"
@@ -224,6 +225,19 @@ TEST(GltfFeatures, AssimpsMaterialOrderIsPredictedOnRealFiles) {
             continue;  // the broken files of the corpus: their errors are tested elsewhere
         }
         ++loaded;
+        const std::optional<JsonValue> document = gltfJson(readTextFile(file));
+        ASSERT_TRUE(document) << file;
+        const std::vector<int> order = assimpMaterialOrder(*document);
+        const JsonValue* list = document->find("materials");
+        std::vector<std::string> predicted, imported;
+        for (const int index : order) {
+            const JsonValue* name = list->items.at(size_t(index)).find("name");
+            predicted.push_back(name ? name->text : "");
+        }
+        for (const Material& m : model.materials) {
+            if (!m.gltfDefault) imported.push_back(m.name);
+        }
+        EXPECT_EQ(predicted, imported) << file;
         EXPECT_TRUE(model.notes.empty()) << file << ": " << model.notes.front();
     }
     // 27 on Debian 12: the others are the corpus' broken files, lines and points, glTF 1.0
