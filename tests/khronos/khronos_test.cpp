@@ -30,6 +30,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -458,23 +459,18 @@ TEST(Khronos, FeaturesMatchTheSampleViewer) {
     const glm::vec3 front(0.0f, 0.0f, 3.2f);
     std::vector<Case> cases;
     // KHR_texture_transform, one property each.
-    cases.push_back(
-        {"tt_offset", k07,
-         texturedSquare(dir, "tt_offset",
-                        R"(,"extensions":{"KHR_texture_transform":{"offset":[0.25,0.1]}})"),
-         front, 192, 144, kFeaturePsnr, kFeatureWorst});
-    cases.push_back({"tt_rotation", k07,
-                     texturedSquare(dir, "tt_rotation",
-                                    R"(,"extensions":{"KHR_texture_transform":{"rotation":0.5}})"),
-                     front, 192, 144, kFeaturePsnr, kFeatureWorst});
-    cases.push_back({"tt_scale", k07,
-                     texturedSquare(dir, "tt_scale",
-                                    R"(,"extensions":{"KHR_texture_transform":{"scale":[2,1.5]}})"),
-                     front, 192, 144, kFeaturePsnr, kFeatureWorst});
-    cases.push_back({"tt_texcoord", k07,
-                     texturedSquare(dir, "tt_texcoord",
-                                    R"(,"extensions":{"KHR_texture_transform":{"texCoord":1}})"),
-                     front, 192, 144, kFeaturePsnr, kFeatureWorst});
+    const std::pair<const char*, const char*> transforms[] = {
+        {"tt_offset", R"("offset":[0.25,0.1])"},
+        {"tt_rotation", R"("rotation":0.5)"},
+        {"tt_scale", R"("scale":[2,1.5])"},
+        {"tt_texcoord", R"("texCoord":1)"}};
+    for (const auto& [name, property] : transforms) {
+        cases.push_back({name, k07,
+                         texturedSquare(dir, name,
+                                        std::string(R"(,"extensions":{"KHR_texture_transform":{)") +
+                                            property + "}}"),
+                         front, 192, 144, kFeaturePsnr, kFeatureWorst});
+    }
     // Fractional metallic: a factor of 0.5, and a texture border (filtering makes fractions).
     cases.push_back(
         {"metallic_half", k07,
