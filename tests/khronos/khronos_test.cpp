@@ -458,6 +458,10 @@ TEST(Khronos, FeaturesMatchTheSampleViewer) {
     const fs::path dir = testOutputDir("khronos_files");
     const glm::vec3 front(0.0f, 0.0f, 3.2f);
     std::vector<Case> cases;
+    // A feature case: 07, 192 x 144, the feature gate, seen from `eye`.
+    auto feature = [&](const std::string& name, const fs::path& file, glm::vec3 eye) {
+        cases.push_back({name, k07, file, eye, 192, 144, kFeaturePsnr, kFeatureWorst});
+    };
     // KHR_texture_transform, one property each.
     const std::pair<const char*, const char*> transforms[] = {
         {"tt_offset", R"("offset":[0.25,0.1])"},
@@ -465,26 +469,26 @@ TEST(Khronos, FeaturesMatchTheSampleViewer) {
         {"tt_scale", R"("scale":[2,1.5])"},
         {"tt_texcoord", R"("texCoord":1)"}};
     for (const auto& [name, property] : transforms) {
-        cases.push_back({name, k07,
-                         texturedSquare(dir, name,
-                                        std::string(R"(,"extensions":{"KHR_texture_transform":{)") +
-                                            property + "}}"),
-                         front, 192, 144, kFeaturePsnr, kFeatureWorst});
+        feature(name,
+                texturedSquare(
+                    dir, name,
+                    std::string(R"(,"extensions":{"KHR_texture_transform":{)") + property + "}}"),
+                front);
     }
     // Fractional metallic: a factor of 0.5, and a texture border (filtering makes fractions).
-    cases.push_back(
-        {"metallic_half", k07,
-         plainSquare(
-             dir, "metallic_half",
-             R"({"pbrMetallicRoughness":{"baseColorFactor":[0.9,0.5,0.2,1],"metallicFactor":0.5,"roughnessFactor":0.4}})"),
-         front, 192, 144, kFeaturePsnr, kFeatureWorst});
-    cases.push_back(
-        {"metal_border", k07,
-         plainSquare(
-             dir, "metal_border",
-             R"({"pbrMetallicRoughness":{"baseColorFactor":[0.9,0.6,0.3,1],"metallicRoughnessTexture":{"index":0}}})",
-             {halvesTexture({0, 110, 255, 255}, {0, 110, 0, 255})}),
-         front, 192, 144, kFeaturePsnr, kFeatureWorst});
+    feature(
+        "metallic_half",
+        plainSquare(
+            dir, "metallic_half",
+            R"({"pbrMetallicRoughness":{"baseColorFactor":[0.9,0.5,0.2,1],"metallicFactor":0.5,"roughnessFactor":0.4}})"),
+        front);
+    feature(
+        "metal_border",
+        plainSquare(
+            dir, "metal_border",
+            R"({"pbrMetallicRoughness":{"baseColorFactor":[0.9,0.6,0.3,1],"metallicRoughnessTexture":{"index":0}}})",
+            {halvesTexture({0, 110, 255, 255}, {0, 110, 0, 255})}),
+        front);
     // A primitive without NORMAL: a low pyramid sharing its apex; flat normals per the spec.
     {
         SceneFile s;
@@ -496,24 +500,23 @@ TEST(Khronos, FeaturesMatchTheSampleViewer) {
         s.materials.push_back(
             R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],"metallicFactor":0,"roughnessFactor":0.6}})");
         s.lights.push_back(directional({-0.5f, -0.3f, -1.0f}, 2.5f));
-        cases.push_back({"no_normals", k07, s.write(dir, "no_normals"), front, 192, 144,
-                         kFeaturePsnr, kFeatureWorst});
+        feature("no_normals", s.write(dir, "no_normals"), front);
     }
     // A normal texture and no TANGENT: both derive the frame from the texture coordinates.
-    cases.push_back(
-        {"no_tangents", k07,
-         plainSquare(
-             dir, "no_tangents",
-             R"({"pbrMetallicRoughness":{"baseColorFactor":[0.7,0.7,0.7,1],"metallicFactor":0,"roughnessFactor":0.5},"normalTexture":{"index":0}})",
-             {bumpNormalTexture()}),
-         front, 192, 144, kFeaturePsnr, kFeatureWorst});
-    cases.push_back(
-        {"vertex_colors", k07,
-         plainSquare(
-             dir, "vertex_colors",
-             R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0,"roughnessFactor":0.6}})",
-             {}, {1, 0.2f, 0.1f, 1, 0.1f, 0.9f, 0.2f, 1, 0.1f, 0.2f, 1, 1, 0.9f, 0.9f, 0.1f, 1}),
-         front, 192, 144, kFeaturePsnr, kFeatureWorst});
+    feature(
+        "no_tangents",
+        plainSquare(
+            dir, "no_tangents",
+            R"({"pbrMetallicRoughness":{"baseColorFactor":[0.7,0.7,0.7,1],"metallicFactor":0,"roughnessFactor":0.5},"normalTexture":{"index":0}})",
+            {bumpNormalTexture()}),
+        front);
+    feature(
+        "vertex_colors",
+        plainSquare(
+            dir, "vertex_colors",
+            R"({"pbrMetallicRoughness":{"baseColorFactor":[1,1,1,1],"metallicFactor":0,"roughnessFactor":0.6}})",
+            {}, {1, 0.2f, 0.1f, 1, 0.1f, 0.9f, 0.2f, 1, 0.1f, 0.2f, 1, 1, 0.9f, 0.9f, 0.1f, 1}),
+        front);
     // The alpha modes: a textured square with alpha rising left to right in front of a red one.
     for (const char* mode : {"OPAQUE", "MASK", "BLEND"}) {
         SceneFile s;
@@ -556,20 +559,20 @@ TEST(Khronos, FeaturesMatchTheSampleViewer) {
                          kFeatureWorst});
     }
     // Occlusion: with IBL off it changes nothing on either side (it applies to indirect light).
-    cases.push_back(
-        {"occlusion", k07,
-         plainSquare(
-             dir, "occlusion",
-             R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],"metallicFactor":0,"roughnessFactor":0.5},"occlusionTexture":{"index":0,"strength":1}})",
-             {halvesTexture({40, 40, 40, 255}, {255, 255, 255, 255})}),
-         front, 192, 144, kFeaturePsnr, kFeatureWorst});
-    cases.push_back(
-        {"emissive", k07,
-         plainSquare(
-             dir, "emissive",
-             R"({"pbrMetallicRoughness":{"baseColorFactor":[0.2,0.2,0.2,1],"metallicFactor":0,"roughnessFactor":0.5},"emissiveFactor":[0.8,0.5,0.3],"emissiveTexture":{"index":0}})",
-             {quadrantTexture()}),
-         front, 192, 144, kFeaturePsnr, kFeatureWorst});
+    feature(
+        "occlusion",
+        plainSquare(
+            dir, "occlusion",
+            R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],"metallicFactor":0,"roughnessFactor":0.5},"occlusionTexture":{"index":0,"strength":1}})",
+            {halvesTexture({40, 40, 40, 255}, {255, 255, 255, 255})}),
+        front);
+    feature(
+        "emissive",
+        plainSquare(
+            dir, "emissive",
+            R"({"pbrMetallicRoughness":{"baseColorFactor":[0.2,0.2,0.2,1],"metallicFactor":0,"roughnessFactor":0.5},"emissiveFactor":[0.8,0.5,0.3],"emissiveTexture":{"index":0}})",
+            {quadrantTexture()}),
+        front);
     // A spot's cone and a point light's range on a large square, each light alone.
     auto litSquare = [&](const std::string& name, const Light& light) {
         SceneFile s;
@@ -579,8 +582,7 @@ TEST(Khronos, FeaturesMatchTheSampleViewer) {
         s.materials.push_back(
             R"({"pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],"metallicFactor":0,"roughnessFactor":0.8}})");
         s.lights.push_back(light);
-        cases.push_back(
-            {name, k07, s.write(dir, name), {0, 0, 6.0f}, 192, 144, kFeaturePsnr, kFeatureWorst});
+        feature(name, s.write(dir, name), {0, 0, 6.0f});
     };
     litSquare("spot_cone", spot({0.3f, 0.2f, 2.0f}, {-0.15f, -0.1f, -1.0f}, 12.0f, 0.25f, 0.45f));
     litSquare("point_range", point({0.3f, -0.2f, 0.6f}, 2.0f, 1.5f));
