@@ -1,6 +1,6 @@
 # The browser build: configured by ./build.sh web through emcmake (Debian's emscripten 3.1.6) into
 # build/web. The same samples/NN/main.cpp, common/ and shaders/ as the native build, for WebGL 2;
-# what the web needs differently lives in common/ behind PBR_WEBGL (common/gl.h). Each sample is
+# what the web needs differently lives in common/ behind PBR_WEBGL (common/gl/gl.h). Each sample is
 # one self-contained page (.html with its wasm, shaders and assets inside), so it opens from
 # file:// as well as from any static server.
 #

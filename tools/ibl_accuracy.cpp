@@ -23,17 +23,17 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app.h"
-#include "brdf.h"
-#include "cube_geometry.h"
-#include "error.h"
-#include "framebuffer.h"
-#include "ibl.h"
-#include "image.h"
-#include "mesh.h"
-#include "paths.h"
-#include "shader.h"
-#include "texture.h"
+#include "app/app.h"
+#include "base/error.h"
+#include "base/paths.h"
+#include "files/image.h"
+#include "gl/framebuffer.h"
+#include "gl/mesh.h"
+#include "gl/shader.h"
+#include "gl/texture.h"
+#include "ibl/ibl.h"
+#include "math/brdf.h"
+#include "math/cube_geometry.h"
 
 namespace {
 
@@ -178,7 +178,7 @@ dvec3 referencePrefiltered(const SphereQuadrature& env, const dvec3& N, double r
 }
 
 // ---------------------------------------------------------------------------------------------
-// GPU: LearnOpenGL's irradiance, rendered the way common/ibl.cpp renders ours
+// GPU: LearnOpenGL's irradiance, rendered the way common/ibl/ibl.cpp renders ours
 
 pbr::TextureCube learnOpenGlIrradiance(const pbr::TextureCube& environment, int size) {
     pbr::TextureCube irradiance(size, 1);

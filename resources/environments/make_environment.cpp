@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <string>
 
-#include "error.h"
-#include "image.h"
-#include "options.h"
+#include "app/options.h"
+#include "base/error.h"
+#include "files/image.h"
 
 namespace {
 

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "app.h"
-#include "error.h"
-#include "ibl.h"
-#include "ibl_cache.h"
-#include "ktx.h"
+#include "app/app.h"
+#include "base/error.h"
+#include "files/ktx.h"
+#include "ibl/ibl.h"
+#include "ibl/ibl_cache.h"
 
 namespace {
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "error.h"
+#include "app/options.h"
+#include "base/error.h"
 #include "materials.h"
-#include "options.h"
 
 int main(int argc, char** argv) try {
     const std::string usage =

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "image.h"
+#include "files/image.h"
 
 namespace pbr::materials {
 

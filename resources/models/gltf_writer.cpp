@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "error.h"
+#include "base/error.h"
 
 namespace pbr::gltf {
 

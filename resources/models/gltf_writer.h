@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "mesh.h"
+#include "gl/mesh.h"
 
 namespace pbr::gltf {
 

@@ -58,11 +58,11 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "error.h"
+#include "base/error.h"
+#include "base/output.h"
+#include "files/image.h"
+#include "gl/mesh.h"
 #include "gltf_writer.h"
-#include "image.h"
-#include "mesh.h"
-#include "output.h"
 #include "procedural.h"
 
 namespace {

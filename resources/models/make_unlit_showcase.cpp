@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "error.h"
+#include "base/error.h"
+#include "base/output.h"
+#include "files/image.h"
 #include "gltf_writer.h"
-#include "image.h"
-#include "output.h"
 
 namespace {
 

@@ -6,10 +6,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app.h"
-#include "error.h"
-#include "mesh.h"
-#include "sphere_grid.h"
+#include "app/app.h"
+#include "base/error.h"
+#include "gl/mesh.h"
+#include "math/sphere_grid.h"
 
 int main(int argc, char** argv) try {
     pbr::App app(

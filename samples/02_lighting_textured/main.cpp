@@ -1,12 +1,12 @@
 // 02 lighting_textured: LearnOpenGL "PBR / Lighting", textured. The 7 x 7 grid again, every
 // sphere in the same material from five maps (rusted iron, made by the project), one light.
 // See README.md beside this file.
-#include "app.h"
-#include "error.h"
-#include "mesh.h"
-#include "paths.h"
-#include "sphere_grid.h"
-#include "texture.h"
+#include "app/app.h"
+#include "base/error.h"
+#include "base/paths.h"
+#include "gl/mesh.h"
+#include "gl/texture.h"
+#include "math/sphere_grid.h"
 
 int main(int argc, char** argv) try {
     pbr::App app(

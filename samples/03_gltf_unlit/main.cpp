@@ -5,10 +5,10 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app.h"
-#include "error.h"
-#include "model.h"
-#include "paths.h"
+#include "app/app.h"
+#include "base/error.h"
+#include "base/paths.h"
+#include "gltf/model.h"
 
 int main(int argc, char** argv) try {
     pbr::App app(

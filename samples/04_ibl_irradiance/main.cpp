@@ -4,12 +4,12 @@
 // file.
 #include <algorithm>
 
-#include "app.h"
-#include "error.h"
-#include "ibl.h"
-#include "ibl_cache.h"
-#include "mesh.h"
-#include "sphere_grid.h"
+#include "app/app.h"
+#include "base/error.h"
+#include "gl/mesh.h"
+#include "ibl/ibl.h"
+#include "ibl/ibl_cache.h"
+#include "math/sphere_grid.h"
 
 int main(int argc, char** argv) try {
     pbr::App app(argc, argv,

@@ -5,14 +5,14 @@
 #include <algorithm>
 #include <array>
 
-#include "app.h"
-#include "error.h"
-#include "ibl.h"
-#include "ibl_cache.h"
-#include "mesh.h"
-#include "paths.h"
-#include "sphere_grid.h"
-#include "texture.h"
+#include "app/app.h"
+#include "base/error.h"
+#include "base/paths.h"
+#include "gl/mesh.h"
+#include "gl/texture.h"
+#include "ibl/ibl.h"
+#include "ibl/ibl_cache.h"
+#include "math/sphere_grid.h"
 
 namespace {
 // The --textured row, left to right, in the text's order.
@@ -37,7 +37,8 @@ int main(int argc, char** argv) try {
     if (textured) app.setDefaultCamera({0.0f, 0.0f, 8.0f});  // the row of five, 10 away
 
     // Precompute (or load from the cache): environment 512^2, irradiance 32^2, prefiltered
-    // specular 128^2 with 5 mips (roughness = mip / 4), BRDF LUT 512^2 RG16F; 1024 samples each.
+    // specular 128^2 with 5 mips (roughness = mip / 4) from pbr::kPrefilterSamples (256) samples
+    // a texel, the sun summed apart (see README.md), and the BRDF LUT 512^2 RG16F from 1024.
     pbr::IblCache cache(pbr::cacheDir(app.options()));
     pbr::IblEnvironment environment(cache, pbr::environmentFile(app.options()));
     const pbr::TextureCube& environmentMap = environment.environmentMap();

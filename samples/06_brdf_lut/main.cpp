@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <utility>
 
-#include "app.h"
-#include "error.h"
-#include "ibl.h"
-#include "ibl_cache.h"
-#include "ktx.h"
-#include "mesh.h"
+#include "app/app.h"
+#include "base/error.h"
+#include "files/ktx.h"
+#include "gl/mesh.h"
+#include "ibl/ibl.h"
+#include "ibl/ibl_cache.h"
 
 int main(int argc, char** argv) try {
     pbr::App app(

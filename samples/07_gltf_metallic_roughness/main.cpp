@@ -3,11 +3,11 @@
 // metallic-roughness, normal, occlusion and emissive maps; alpha modes; double-sided;
 // KHR_texture_transform) under image-based light from 05's maps and the file's own
 // KHR_lights_punctual lights, seen through an orbit camera and a tone mapper. The program is
-// common/gltf_viewer.cpp (shared with 08); the material is shaders/include/gltf_material.glsl.
+// common/gltf/gltf_viewer.cpp (shared with 08); the material is shaders/include/gltf_material.glsl.
 // See README.md beside this file.
-#include "error.h"
-#include "gltf_viewer.h"
-#include "paths.h"
+#include "base/error.h"
+#include "base/paths.h"
+#include "gltf/gltf_viewer.h"
 
 int main(int argc, char** argv) try {
     return pbr::runGltfViewer(argc, argv,

@@ -1,12 +1,16 @@
 #pragma once
-// Sample 09's scene in numbers: where the spheres stand and the five lights, shared by the sample
-// and its reference test (tests/reference/light_types_test.cpp), which shades the same scene on
-// the CPU.
+// Sample 09's scene in numbers: the floor and the spheres (where they stand, which material set,
+// the engine's material inputs), the five lights and the moving lights of the stress test. Plain
+// data, no GL: shared by the sample and its reference test (tests/reference/light_types_test.cpp),
+// which shades the same scene on the CPU.
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
-#include "light_block.h"
+#include "math/light_block.h"
 
 namespace light_types {
 
@@ -36,6 +40,57 @@ inline std::vector<pbr::PackedLight> sceneLights(pbr::Attenuation pointAttenuati
         // an orange ambient sphere around the second sphere
         pbr::ambientSphereLight({-2.5f, 0.8f, 0.8f}, 1.7f, {0.8f, 0.45f, 0.15f}, 2.0f),
     };
+}
+
+// One object of the scene: where it is, which material set, the engine's material inputs.
+struct Object {
+    const char* materialSet;
+    glm::mat4 model;
+    glm::vec2 tiling{1.0f}, offset{0.0f};
+    glm::vec4 tint{1.0f};
+    float metallic = 1.0f, roughness = 1.0f;  // factors on the maps
+    bool floor = false;
+};
+
+// The floor (object 0), then the five spheres from left to right.
+inline std::vector<Object> objects() {
+    std::vector<Object> objects;
+    // the floor: 16 x 10 m at y = 0, the wall set tiled 8 x 5 and shifted by a quarter tile
+    Object floor{"wall",
+                 glm::scale(glm::rotate(glm::mat4(1.0f), -std::numbers::pi_v<float> / 2, {1, 0, 0}),
+                            {8.0f, 5.0f, 1.0f})};
+    floor.tiling = {8.0f, 5.0f};
+    floor.offset = {0.25f, 0.0f};
+    floor.floor = true;
+    objects.push_back(floor);
+    // five spheres in a row, 2.5 m apart, resting on the floor
+    const char* sets[5] = {"rusted_iron", "gold", "grass", "plastic", "wall"};
+    for (int i = 0; i < 5; ++i) {
+        objects.push_back({sets[i], glm::scale(glm::translate(glm::mat4(1.0f), sphereCentre(i)),
+                                               glm::vec3(kSphereRadius))});
+    }
+    objects[3].tiling = {2.0f, 1.0f};              // grass: twice around
+    objects[4].tint = {0.45f, 0.65f, 1.0f, 1.0f};  // plastic, tinted blue
+    objects[5].offset = {0.5f, 0.0f};              // wall: the pattern turned half way round
+    return objects;
+}
+
+// N moving point lights for the stress test: on a circle over the scene, turning with `time`,
+// colours round the hue wheel; the same short range as the scene's point light (terms 1, 0.7,
+// 1.8), so each makes its own small pool of light.
+inline std::vector<pbr::PackedLight> movingLights(int count, float time) {
+    std::vector<pbr::PackedLight> lights;
+    for (int i = 0; i < count; ++i) {
+        const float t = float(i) / float(count);
+        const float angle = 2.0f * std::numbers::pi_v<float> * t + 0.5f * time;
+        const glm::vec3 position(6.5f * std::cos(angle), 0.6f + 0.4f * std::sin(3.0f * angle),
+                                 3.5f * std::sin(angle));
+        const glm::vec3 hue = glm::clamp(
+            glm::abs(glm::mod(6.0f * t + glm::vec3(0.0f, 4.0f, 2.0f), 6.0f) - 3.0f) - 1.0f, 0.0f,
+            1.0f);
+        lights.push_back(pbr::pointLight(position, hue, 3.0f, {1.0f, 0.7f, 1.8f}));
+    }
+    return lights;
 }
 
 }  // namespace light_types

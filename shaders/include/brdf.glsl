@@ -1,5 +1,6 @@
 // The Cook-Torrance BRDF of LearnOpenGL's PBR chapters, written once for every sample.
-// Mirrored on the CPU by common/brdf.cpp (same names), which the reference tests compare against.
+// Mirrored on the CPU by common/math/brdf.cpp (same names), which the reference tests compare
+// against.
 
 const float PI = 3.14159265359;
 

@@ -6,7 +6,7 @@
 // including shader declares the inputs WorldPos, Normal, Tangent, TexCoords0, TexCoords1 and
 // VertexColor. Texture units are fixed: 0 base colour (or diffuse), 1 metallic-roughness (or
 // specular-glossiness), 2 normal, 3 occlusion, 4 emissive (bound by pbr::GltfRenderer,
-// common/gltf_renderer.h).
+// common/gltf/gltf_renderer.h).
 #include "normal_mapping.glsl"
 
 const int ALPHA_OPAQUE = 0;

@@ -1,5 +1,6 @@
 // Quasi-random sampling of the GGX lobe, shared by the prefiltered environment map and the BRDF
-// lookup table (Karis, "Real Shading in Unreal Engine 4"). Mirrored on the CPU by common/brdf.cpp.
+// lookup table (Karis, "Real Shading in Unreal Engine 4"). Mirrored on the CPU by
+// common/math/brdf.cpp.
 #include "brdf.glsl"
 
 // The i-th of N Hammersley points: (i / N, the radical inverse of i in base 2).

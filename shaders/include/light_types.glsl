@@ -1,7 +1,7 @@
 // The Overload engine's five light types, read from one buffer (sample 09). Each light is the
 // engine's mat4, here a struct of four vec4 columns mirrored by pbr::PackedLight
-// (common/light_block.h, which documents every slot); the block by pbr::LightBlock. Mirrored on
-// the CPU by pbr::cpu::shadeLightTypes (common/brdf.cpp). Needs brdf.glsl.
+// (common/math/light_block.h, which documents every slot); the block by pbr::LightBlock. Mirrored
+// on the CPU by pbr::cpu::shadeLightTypes (common/math/brdf.cpp). Needs brdf.glsl.
 
 const int MAX_LIGHTS = 255;  // pbr::LightBlock::kMaxLights: 16 KiB, the block size GL 3.3 guarantees
 

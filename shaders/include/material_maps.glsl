@@ -1,5 +1,5 @@
-// The five maps of a PBR material folder (see common/texture.h), read at TexCoords. The including
-// shader declares the inputs TexCoords, WorldPos, Normal and Tangent.
+// The five maps of a PBR material folder (see common/gl/texture.h), read at TexCoords. The
+// including shader declares the inputs TexCoords, WorldPos, Normal and Tangent.
 #include "normal_mapping.glsl"
 
 // albedoMap is an sRGB texture, so the sampler returns linear values; aoMap holds linear data

@@ -1,7 +1,7 @@
 // Tangent-space normal maps (OpenGL convention: green points to the image's top).
 // Two ways to the tangent frame; both return the world-space normal.
 
-// From the mesh: the vertex tangent (xyz along +u, w the handedness, see common/mesh.h),
+// From the mesh: the vertex tangent (xyz along +u, w the handedness, see common/gl/mesh.h),
 // re-orthogonalised against the interpolated normal (Gram-Schmidt).
 vec3 normalFromMapWithTangent(vec3 tangentNormal, vec3 normal, vec4 tangent)
 {

@@ -1,7 +1,7 @@
 // KHR_lights_punctual (glTF 2.0): directional, point and spot lights, each with colour x
 // intensity, point and spot with the specification's range window, spot with its smooth cone.
-// Mirrored on the CPU by pbr::cpu::punctualRadiance (common/brdf.h); uploaded by
-// pbr::GltfRenderer::setLights (common/gltf_renderer.h).
+// Mirrored on the CPU by pbr::cpu::punctualRadiance (common/math/brdf.h); uploaded by
+// pbr::GltfRenderer::setLights (common/gltf/gltf_renderer.h).
 
 const int MAX_PUNCTUAL_LIGHTS = 8;
 const int LIGHT_DIRECTIONAL = 0;

@@ -11,7 +11,7 @@ vec3 gammaCorrect(vec3 color)
     return pow(color, vec3(1.0 / 2.2));
 }
 
-// The tone mappers of sample 07 (mirrored on the CPU by pbr::cpu::toneMap, common/tonemap.h,
+// The tone mappers of sample 07 (mirrored on the CPU by pbr::cpu::toneMap, common/math/tonemap.h,
 // which documents the formulas and their sources). toneMap multiplies by the exposure, maps, and
 // returns linear display values in [0, 1] for an sRGB render target to encode; negative input
 // counts as 0, and an unknown mapper as TONEMAP_NONE.

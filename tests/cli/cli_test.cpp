@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "paths.h"
+#include "base/paths.h"
 #include "support/golden.h"
 
 namespace pbr::test {

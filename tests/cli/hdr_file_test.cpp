@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "paths.h"
+#include "base/paths.h"
 #include "support/golden.h"
 
 namespace pbr::test {

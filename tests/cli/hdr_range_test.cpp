@@ -7,8 +7,8 @@
 #include <cstring>
 #include <numbers>
 
-#include "image.h"
-#include "ktx.h"
+#include "files/image.h"
+#include "files/ktx.h"
 #include "support/golden.h"
 
 namespace pbr::test {

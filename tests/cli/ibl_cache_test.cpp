@@ -8,10 +8,10 @@
 #include <fstream>
 #include <regex>
 
-#include "brdf.h"
-#include "image.h"
-#include "ktx.h"
-#include "paths.h"
+#include "base/paths.h"
+#include "files/image.h"
+#include "files/ktx.h"
+#include "math/brdf.h"
 #include "support/golden.h"
 
 namespace pbr::test {

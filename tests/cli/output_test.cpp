@@ -5,8 +5,8 @@
 
 #include <fstream>
 
-#include "ktx.h"
-#include "paths.h"
+#include "base/paths.h"
+#include "files/ktx.h"
 #include "support/golden.h"
 
 namespace pbr::test {

@@ -8,8 +8,8 @@
 #include <set>
 #include <tuple>
 
-#include "context.h"
-#include "paths.h"
+#include "base/paths.h"
+#include "context/context.h"
 #include "support/golden.h"
 #include "support/golden_cases.h"
 #include "support/test_data.h"

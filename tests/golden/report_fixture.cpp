@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "paths.h"
+#include "base/paths.h"
 #include "support/golden.h"
 
 namespace fs = std::filesystem;

@@ -35,11 +35,11 @@
 
 #include <glm/glm.hpp>
 
-#include "camera.h"
-#include "gltf_renderer.h"
-#include "image.h"
-#include "model.h"
-#include "paths.h"
+#include "base/paths.h"
+#include "files/image.h"
+#include "gltf/gltf_renderer.h"
+#include "gltf/model.h"
+#include "math/camera.h"
 #include "support/gltf_scene.h"
 #include "support/process.h"
 #include "support/test_data.h"
@@ -50,7 +50,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr float kClearLinear = 0.02f;  // 07's background without IBL (common/gltf_viewer.cpp)
+constexpr float kClearLinear = 0.02f;  // 07's background without IBL (common/gltf/gltf_viewer.cpp)
 
 fs::path viewerPackage() {
     return fs::path(PBR_NODE_TOOLS_DIR) / "node_modules" / "@khronosgroup" / "gltf-viewer";

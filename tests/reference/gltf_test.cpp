@@ -1,8 +1,8 @@
-// Sample 07 against the glTF specification's arithmetic done on the CPU (pbr::cpu, common/brdf):
-// the Appendix B BRDF under KHR_lights_punctual lights, with image-based light off and no tone
-// mapping, so a pixel is encode_sRGB(the sum over the lights). Scenes are written by the tests
-// in JSON (tests/support/gltf_scene.h) or are the project's showcase; every ray is cast against
-// the very triangles the GPU draws (tests/support/mesh_hit.h).
+// Sample 07 against the glTF specification's arithmetic done on the CPU (pbr::cpu,
+// common/math/brdf): the Appendix B BRDF under KHR_lights_punctual lights, with image-based light
+// off and no tone mapping, so a pixel is encode_sRGB(the sum over the lights). Scenes are written
+// by the tests in JSON (tests/support/gltf_scene.h) or are the project's showcase; every ray is
+// cast against the very triangles the GPU draws (tests/support/mesh_hit.h).
 //
 // Exactness: no MSAA; pixels within 1 % of a triangle edge are left out; so are pixels where the
 // CPU's own answer moves by more than 1/255 when the normal turns by 0.002 radians (the peak of
@@ -16,15 +16,15 @@
 #include <map>
 #include <optional>
 
-#include "support/golden.h"
 #include "support/gltf_scene.h"
+#include "support/golden.h"
 #include "support/mesh_hit.h"
 
-#include "brdf.h"
-#include "camera.h"
-#include "image.h"
-#include "model.h"
-#include "paths.h"
+#include "base/paths.h"
+#include "files/image.h"
+#include "gltf/model.h"
+#include "math/brdf.h"
+#include "math/camera.h"
 
 namespace pbr::test {
 namespace {

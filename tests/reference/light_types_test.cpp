@@ -1,6 +1,6 @@
 // Sample 09 against the CPU: each light type alone (--only), on the plain material
 // (--untextured: floor albedo 0.8 grey, metallic 0, roughness 0.9, ao 1, normal +Y), every floor
-// pixel the spheres do not hide, shaded by pbr::cpu::shadeLightTypes (common/brdf.cpp, written
+// pixel the spheres do not hide, shaded by pbr::cpu::shadeLightTypes (common/math/brdf.cpp, written
 // apart from light_types.glsl) and the engine's Reinhard + gamma. Pixels are counted on both
 // sides of every edge: inside, in the band of and outside the spot's cone; inside and outside
 // each ambient volume (pixels whose neighbours fall on the other side are left out: the edge
@@ -20,9 +20,9 @@
 #include "support/process.h"
 
 #include "../../samples/09_light_types/scene.h"
-#include "brdf.h"
-#include "camera.h"
-#include "image.h"
+#include "files/image.h"
+#include "math/brdf.h"
+#include "math/camera.h"
 
 namespace pbr::test {
 namespace {

@@ -1,4 +1,4 @@
-// The GPU against an independent CPU evaluation of the same BRDF (common/brdf.cpp, GLM only).
+// The GPU against an independent CPU evaluation of the same BRDF (common/math/brdf.cpp, GLM only).
 // For pixels on every sphere of the grid (rendered without MSAA) the ray through the pixel
 // centre is intersected with the analytic sphere, the surface is shaded on the CPU at the hit
 // point with the analytic normal, and the result must match the rendered pixel within 2/255.
@@ -12,8 +12,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "brdf.h"
-#include "mesh.h"
+#include "gl/mesh.h"
+#include "math/brdf.h"
 #include "support/golden.h"
 #include "support/mesh_hit.h"
 

@@ -36,10 +36,10 @@
 #include "support/mesh_hit.h"
 #include "support/test_data.h"
 
-#include "camera.h"
-#include "gltf_file.h"
-#include "image.h"
-#include "model.h"
+#include "files/gltf_file.h"
+#include "files/image.h"
+#include "gltf/model.h"
+#include "math/camera.h"
 
 namespace pbr::test {
 namespace {

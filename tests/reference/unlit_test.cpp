@@ -15,9 +15,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "camera.h"
-#include "model.h"
-#include "paths.h"
+#include "base/paths.h"
+#include "gltf/model.h"
+#include "math/camera.h"
 #include "support/golden.h"
 #include "support/mesh_hit.h"
 

@@ -11,8 +11,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "image.h"
-#include "paths.h"
+#include "base/paths.h"
+#include "files/image.h"
 #include "support/process.h"
 
 namespace pbr::test {

@@ -5,7 +5,7 @@
 
 #include <sstream>
 
-#include "context.h"
+#include "context/context.h"
 #include "support/golden.h"
 
 namespace pbr::test {

@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "gltf_file.h"
+#include "files/gltf_file.h"
 
 namespace pbr::test {
 

@@ -11,8 +11,8 @@
 #include <set>
 #include <sstream>
 
-#include "output.h"
-#include "paths.h"
+#include "base/output.h"
+#include "base/paths.h"
 
 namespace pbr::test {
 

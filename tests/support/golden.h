@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "image.h"
+#include "files/image.h"
 #include "support/process.h"
 
 namespace pbr::test {

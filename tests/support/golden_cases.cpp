@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "paths.h"
+#include "base/paths.h"
 
 namespace pbr::test {
 

@@ -11,8 +11,8 @@
 
 #include <glm/glm.hpp>
 
-#include "mesh.h"
-#include "model.h"
+#include "gl/mesh.h"
+#include "gltf/model.h"
 
 namespace pbr::test {
 

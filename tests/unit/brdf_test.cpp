@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "brdf.h"
-#include "cube_geometry.h"
-#include "ibl.h"
+#include "ibl/ibl.h"
+#include "math/brdf.h"
+#include "math/cube_geometry.h"
 
 namespace pbr::cpu {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "camera.h"
+#include "math/camera.h"
 
 namespace pbr {
 namespace {
@@ -104,7 +104,8 @@ TEST(Camera, GridCameraSeesTheWholeGrid) {
     }
 }
 
-// ---- Frustum -------------------------------------------------------------------------------------
+// ---- Frustum
+// -------------------------------------------------------------------------------------
 
 // A 90-degree square frustum from the origin down -Z, near 1, far 10: its planes are |x| = -z,
 // |y| = -z, z = -1 and z = -10, so where a sphere stands is plain geometry.

@@ -9,9 +9,9 @@
 #include <random>
 #include <string>
 
-#include "error.h"
-#include "image.h"
-#include "ktx.h"
+#include "base/error.h"
+#include "files/image.h"
+#include "files/ktx.h"
 
 namespace pbr {
 namespace {

@@ -16,11 +16,11 @@
 #include "support/process.h"
 #include "support/test_data.h"
 
-#include "error.h"
-#include "gltf_file.h"
-#include "image.h"
-#include "model.h"
-#include "paths.h"
+#include "base/error.h"
+#include "base/paths.h"
+#include "files/gltf_file.h"
+#include "files/image.h"
+#include "gltf/model.h"
 
 namespace pbr::test {
 namespace {

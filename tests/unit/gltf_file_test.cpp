@@ -1,5 +1,5 @@
-// The checks of a glTF container before Assimp reads it (common/gltf_file.h): well-formed JSON is
-// accepted, each kind of damage is named with where it is.
+// The checks of a glTF container before Assimp reads it (common/files/gltf_file.h): well-formed
+// JSON is accepted, each kind of damage is named with where it is.
 #include <gtest/gtest.h>
 
 #include "support/test_data.h"
@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "gltf_file.h"
+#include "files/gltf_file.h"
 
 namespace pbr {
 namespace {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <fstream>
 
-#include "error.h"
-#include "image.h"
+#include "base/error.h"
+#include "files/image.h"
 
 namespace pbr {
 namespace {

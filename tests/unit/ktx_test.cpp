@@ -6,8 +6,8 @@
 #include <cstring>
 #include <fstream>
 
-#include "error.h"
-#include "ktx.h"
+#include "base/error.h"
+#include "files/ktx.h"
 #include "support/process.h"
 
 namespace pbr {

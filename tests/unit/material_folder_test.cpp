@@ -1,12 +1,12 @@
-// Which file of a material folder is which map (common/material_folder.h), under the names the
-// texture sets people download use. The expected maps are read off the naming schemes of those
+// Which file of a material folder is which map (common/files/material_folder.h), under the names
+// the texture sets people download use. The expected maps are read off the naming schemes of those
 // sets (freepbr, ambientCG, Poly Haven), not off the code.
 #include <gtest/gtest.h>
 
 #include <fstream>
 
-#include "error.h"
-#include "material_folder.h"
+#include "base/error.h"
+#include "files/material_folder.h"
 #include "support/process.h"
 
 namespace pbr {

@@ -9,9 +9,9 @@
 #include <vector>
 #include <numbers>
 
-#include "mesh.h"
-#include "model.h"
-#include "paths.h"
+#include "base/paths.h"
+#include "gl/mesh.h"
+#include "gltf/model.h"
 
 namespace pbr {
 namespace {
@@ -209,7 +209,7 @@ void expectClosedOutwardMesh(const MeshData& mesh) {
 
 // The glTF files the build generates (resources/models) are wound the same way, as the glTF
 // specification asks: the renderer culls back faces of every primitive whose material is not
-// doubleSided (common/gltf_renderer.cpp), so none of those may show its back.
+// doubleSided (common/gltf/gltf_renderer.cpp), so none of those may show its back.
 TEST(Winding, EveryGeneratedGltfPrimitiveThatIsNotDoubleSidedFacesItsNormals) {
     int files = 0, culled = 0;
     for (const auto& entry : std::filesystem::directory_iterator(modelDir())) {

@@ -4,9 +4,9 @@
 
 #include "support/test_data.h"
 
-#include "error.h"
-#include "model.h"
-#include "paths.h"
+#include "base/error.h"
+#include "base/paths.h"
+#include "gltf/model.h"
 
 namespace pbr {
 namespace {

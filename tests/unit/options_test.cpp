@@ -2,8 +2,8 @@
 
 #include <sstream>
 
-#include "error.h"
-#include "options.h"
+#include "app/options.h"
+#include "base/error.h"
 
 namespace pbr {
 namespace {

@@ -1,4 +1,4 @@
-// Every file the suite writes is whole or absent (common/output.h): the checks a full disk, a
+// Every file the suite writes is whole or absent (common/base/output.h): the checks a full disk, a
 // missing folder or a folder in the way must pass, in-process. The same through whole samples
 // (a nearly full disk, /dev/full, 06's batch) is in tests/cli/output_test.cpp.
 #include <gtest/gtest.h>
@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <functional>
 
-#include "error.h"
-#include "output.h"
+#include "base/error.h"
+#include "base/output.h"
 #include "support/process.h"
 
 namespace pbr {

@@ -3,9 +3,9 @@
 
 #include <fstream>
 
-#include "error.h"
-#include "paths.h"
-#include "shader.h"
+#include "base/error.h"
+#include "base/paths.h"
+#include "gl/shader.h"
 
 namespace pbr {
 namespace {

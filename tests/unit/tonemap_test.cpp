@@ -1,4 +1,4 @@
-// The tone mappers of common/tonemap.h against values worked out independently: closed forms by
+// The tone mappers of common/math/tonemap.h against values worked out independently: closed forms by
 // hand, and for ACES a double-precision evaluation written out here from the published fit
 // (BakingLab's ACES.hlsl, its matrices as rows) rather than the library's column-major GLM.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <array>
 #include <set>
 
-#include "tonemap.h"
+#include "math/tonemap.h"
 
 namespace pbr::cpu {
 namespace {

@@ -1,0 +1,162 @@
+#pragma once
+// The frame around a sample: command line, context (window or offscreen), input, time, the
+// render target, screenshots, headless capture, GL error checks and the benchmark.
+//
+//     int main(int argc, char** argv) try {
+//         pbr::App app(argc, argv, {.name = "01_lighting", .cameraPosition = {0, 0, 23}});
+//         pbr::Shader& pbr = app.shader("01_lighting/pbr.vert", "01_lighting/pbr.frag");
+//         while (app.nextFrame()) { ... draw ... }
+//     } catch (...) {
+//         return pbr::reportFailure();
+//     }
+#include <chrono>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "app/options.h"
+#include "context/context.h"
+#include "gl/framebuffer.h"
+#include "gl/shader.h"
+#include "math/camera.h"
+
+namespace pbr {
+
+struct AppConfig {
+    std::string name{};   // "01_lighting": the default output file and window title
+    std::string title{};  // window title; empty: the name
+    glm::vec3 cameraPosition{0.0f, 0.0f, 3.0f};  // default start, unless --camera says otherwise
+    float cameraYaw = FlyCamera::kDefaultYaw;
+    float cameraPitch = FlyCamera::kDefaultPitch;
+    std::vector<FlagSpec> flags{};  // the sample's own flags
+    // The render target stores sRGB and the GL encodes (see framebuffer.h): the sample's shaders
+    // write linear values and blending happens in linear light.
+    bool srgbTarget = false;
+    // The sample looks at a model through an OrbitCamera (App::useOrbitCamera): the cursor stays
+    // free in a window (left drag orbits, scroll dollies, WASD does nothing), and --camera takes
+    // x,y,z only: yaw and pitch are refused as a bad flag, before any context exists, since the
+    // orbit camera always looks at the model's centre.
+    bool orbitCamera = false;
+};
+
+class App {
+public:
+    App(int argc, char** argv, AppConfig config);
+    ~App();
+    App(const App&) = delete;
+    App& operator=(const App&) = delete;
+
+    // Ends the previous frame (resolve, show or capture) and starts the next one (input, time,
+    // render target bound, viewport set). Returns false when the run is over: the window was
+    // closed, or --frames were drawn; headless, the last frame has been written by then.
+    bool nextFrame();
+
+    const Options& options() const { return options_; }
+    // The value of one of the sample's own flags, when given (already checked against its
+    // FlagSpec when the App was made).
+    std::optional<std::string> flag(const std::string& name) const;
+    // A sample flag's value converted: a Choice flag's word (its first choice when not given),
+    // an Integer or Number flag's value, or `fallback` when not given.
+    std::string flagChoice(const std::string& name) const;
+    int flagInt(const std::string& name, int fallback) const;
+    float flagNumber(const std::string& name, float fallback) const;
+    // A Numbers flag's values (its FlagSpec's count of them), when given.
+    std::optional<std::vector<float>> flagNumbers(const std::string& name) const;
+
+    // A file to write together with the picture at the end of the run: the picture (when one is
+    // written) and every such file appear together, or none does (see output.h).
+    void addOutputFile(std::filesystem::path path, std::string bytes);
+
+    FlyCamera& camera() { return camera_; }
+    // A start pose found after the App was made (framing a model, say); --camera still wins.
+    void setDefaultCamera(const glm::vec3& position, float yaw = FlyCamera::kDefaultYaw,
+                          float pitch = FlyCamera::kDefaultPitch) {
+        if (!options_.camera) camera_ = FlyCamera(position, yaw, pitch);
+    }
+    // Switches to an orbit camera around these bounds (in the model's own units): framing them
+    // (OrbitCamera::framing at the current aspect), or, when --camera x,y,z was given, from that
+    // position looking at their centre (OrbitCamera::fromPosition). Needs AppConfig::orbitCamera;
+    // may be called again (another model): the view starts afresh.
+    void useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax);
+    // The orbit camera once useOrbitCamera was called, else nullptr.
+    const OrbitCamera* orbitCamera() const { return orbit_ ? &*orbit_ : nullptr; }
+
+    // The active camera's (orbit or fly).
+    glm::mat4 view() const { return orbit_ ? orbit_->viewMatrix() : camera_.viewMatrix(); }
+    glm::mat4 projection() const {
+        return orbit_ ? orbit_->projectionMatrix(aspect()) : camera_.projectionMatrix(aspect());
+    }
+    glm::vec3 cameraPosition() const { return orbit_ ? orbit_->position() : camera_.position(); }
+    // The active camera's view volume: what lies wholly outside it need not be drawn.
+    Frustum frustum() const { return Frustum(projection() * view()); }
+
+    // A program from shaders/<vertex> and shaders/<fragment>, owned by the App so that R can
+    // reload it. The reference stays valid for the App's life.
+    Shader& shader(const std::string& vertex, const std::string& fragment);
+
+    // Rebinds the frame's render target (after drawing into a framebuffer of your own).
+    void bindRenderTarget() const;
+
+    bool headless() const { return !context_->windowed(); }
+    int width() const { return target_->width(); }
+    int height() const { return target_->height(); }
+    float aspect() const { return float(width()) / float(height()); }
+    float time() const { return time_; }            // seconds; fixed when headless
+    float deltaTime() const { return deltaTime_; }  // seconds since the last frame
+    int frameIndex() const { return frameIndex_; }  // 0 for the first frame
+    std::string renderer() const;
+    // Adds to the precompute time --benchmark reports (IBL maps and the like, cache off).
+    void addPrecomputeSeconds(double seconds) { precomputeSeconds_ += seconds; }
+
+private:
+    void beginFrame();
+    void endFrame();
+    void finish();
+    void installDebugOutput();
+    void checkGlErrors(const char* where);
+    void writeScreenshot(const std::string& path);
+    std::string frameDescription() const;
+    const FlagSpec& sampleFlag(const std::string& name) const;
+
+    AppConfig config_;
+    Options options_;
+    std::string usage_;
+    std::unique_ptr<Context> context_;  // first member: destroyed last
+    std::unique_ptr<RenderTarget> target_;
+    std::deque<Shader> shaders_;
+    FlyCamera camera_;
+    std::optional<OrbitCamera> orbit_;
+
+    int framesWanted_ = 0;  // 0: until the window closes
+    int frameIndex_ = -1;
+    float time_ = 0.0f, deltaTime_ = 0.0f;
+    double lastSeconds_ = 0.0;
+    double startSeconds_ = 0.0;  // context clock when the context was made: scene time 0
+    std::chrono::steady_clock::time_point constructed_ = std::chrono::steady_clock::now();
+    double startupSeconds_ = 0.0;  // App constructed (context creation included) -> first frame
+    double lastFrameEnd_ = 0.0;       // --benchmark: context clock when the last frame ended
+    double firstFrameSeconds_ = 0.0;  // --benchmark: process start -> first frame finished
+    double precomputeSeconds_ = 0.0;
+    std::vector<double> frameMilliseconds_;
+    std::vector<std::pair<std::filesystem::path, std::string>> outputFiles_;
+    int screenshotCount_ = 0;
+    bool noDisplayFallback_ = false;
+    bool finished_ = false;
+    int glErrorCount_ = 0;
+    int debugErrorsSinceCheck_ = 0;  // errors KHR_debug reported since the last glGetError loop
+    std::string firstGlError_;
+
+#ifndef PBR_WEBGL
+    static void GLAD_API_PTR onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity,
+                                            GLsizei length, const GLchar* message,
+                                            const void* user);
+#endif
+};
+
+}  // namespace pbr

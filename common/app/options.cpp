@@ -1,0 +1,398 @@
+#include "app/options.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <type_traits>
+
+#include "base/error.h"
+#include "base/paths.h"
+
+namespace pbr {
+
+namespace {
+
+struct CommonFlag {
+    const char* name;
+    const char* valueName;  // nullptr: a switch
+    const char* help;
+};
+
+constexpr CommonFlag kCommonFlags[] = {
+    {"--help", nullptr, "print this help and exit (also -h)"},
+    {"--headless", nullptr, "render offscreen (no window) and write the last frame to --output"},
+    {"--output", "FILE.png",
+     "where the last frame goes; the folder must exist (headless default: <sample>.png in the "
+     "current folder; a window writes a picture only when --output is given)"},
+    {"--size", "WxH", "framebuffer size in pixels, 1 to 16384 a side (default 1280x720)"},
+    {"--frames", "N",
+     "frames to render, then exit (default: 1 headless; with --benchmark: frames measured, "
+     "default 30, after one warm-up frame)"},
+    {"--time", "T", "fixed scene time in seconds (headless default 0)"},
+    {"--msaa", "N",
+     "samples per pixel: 0 or 1 (off), or a power of two up to what the GL allows (4 on "
+     "llvmpipe); default 4"},
+    {"--camera", "x,y,z[,yaw,pitch]",
+     "camera start position, and yaw/pitch in degrees (default yaw -90, pitch 0)"},
+    {"--benchmark", nullptr, "time the frames and print one JSON line of statistics"},
+    {"--backend", "osmesa|egl|egl-software",
+     "offscreen backend (implies --headless; default: the first that works of osmesa, egl); "
+     "egl may pick a GPU, egl-software never does"},
+};
+
+constexpr int kUsageWidth = 100;    // columns the help text is wrapped to
+constexpr size_t kFlagColumn = 30;  // where the help starts; a longer flag puts it on the next line
+
+// Every bad value names its flag; the usage text is attached where the App knows the program.
+[[noreturn]] void fail(const std::string& message) {
+    throw UsageError(message, "");
+}
+
+#if !defined(__cpp_lib_to_chars)
+// A standard library without floating-point from_chars (emscripten's libc++ 13): strtod, held to
+// what from_chars takes (no leading space or '+', no hexadecimal).
+bool parseFloating(const std::string& text, double& out, std::errc& error) {
+    error = std::errc::invalid_argument;
+    if (text.empty() || text.front() == '+' ||
+        std::isspace(static_cast<unsigned char>(text.front())) ||
+        text.find_first_of("xX") != std::string::npos) {
+        return false;
+    }
+    char* end = nullptr;
+    errno = 0;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end != text.c_str() + text.size()) return false;
+    if (errno == ERANGE && std::isinf(value)) {
+        error = std::errc::result_out_of_range;
+        return false;
+    }
+    error = std::errc();
+    out = value;
+    return true;
+}
+#endif
+
+template <class T>
+bool parseNumber(const std::string& text, T& out, std::errc& error) {
+#if !defined(__cpp_lib_to_chars)
+    if constexpr (std::is_floating_point_v<T>) {
+        return parseFloating(text, out, error);
+    } else
+#endif
+    {
+        const char* begin = text.data();
+        const char* end = begin + text.size();
+        auto [ptr, ec] = std::from_chars(begin, end, out);
+        error = ec;
+        return ec == std::errc() && ptr == end;
+    }
+}
+
+std::string formatNumber(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+std::string inQuotes(const std::string& text) {
+    return "'" + text + "'";
+}
+
+std::vector<double> parseNumberList(const std::string& flag, const std::string& value,
+                                    double limit) {
+    std::vector<double> numbers;
+    std::stringstream stream(value);
+    std::string part;
+    while (std::getline(stream, part, ',')) {
+        if (part.empty()) fail(flag + ": empty number in " + inQuotes(value));
+        numbers.push_back(parseNumberFlag(flag, part, -limit, limit));
+    }
+    if (!value.empty() && value.back() == ',')
+        fail(flag + ": trailing comma in " + inQuotes(value));
+    return numbers;
+}
+
+}  // namespace
+
+std::vector<double> parseNumbersFlag(const FlagSpec& spec, const std::string& value) {
+    std::vector<double> numbers;
+    std::stringstream stream(value);
+    std::string part;
+    while (std::getline(stream, part, ',')) numbers.push_back(parseNumberFlag(spec.name, part, spec.min, spec.max));
+    if (int(numbers.size()) != spec.count || (!value.empty() && value.back() == ',')) {
+        fail(spec.name + ": " + inQuotes(value) + " is not " + spec.valueName + " (" +
+             std::to_string(spec.count) + " numbers, comma-separated)");
+    }
+    return numbers;
+}
+
+namespace {
+
+void checkSampleFlag(const FlagSpec& spec, const std::string& value) {
+    switch (spec.kind) {
+        case FlagSpec::Kind::Switch:
+            break;
+        case FlagSpec::Kind::Text:
+        case FlagSpec::Kind::OutputFolder:
+            if (value.empty()) fail(spec.name + ": empty value");
+            break;
+        case FlagSpec::Kind::Integer:
+            parseIntFlag(spec.name, value, int(spec.min), int(spec.max));
+            break;
+        case FlagSpec::Kind::Number:
+            parseNumberFlag(spec.name, value, spec.min, spec.max);
+            break;
+        case FlagSpec::Kind::Numbers:
+            parseNumbersFlag(spec, value);
+            break;
+        case FlagSpec::Kind::Choice:
+            if (std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
+                std::string list;
+                for (const std::string& choice : spec.choices)
+                    list += (list.empty() ? "" : " or ") + choice;
+                fail(spec.name + ": " + inQuotes(value) + " is not " + list);
+            }
+            break;
+    }
+}
+
+// "--size 640x360": the message says which half is wrong and why.
+void parseSize(const std::string& value, Options& options) {
+    const size_t x = value.find('x');
+    if (x == std::string::npos || x == 0 || x + 1 == value.size() ||
+        value.find('x', x + 1) != std::string::npos) {
+        fail("--size: " + inQuotes(value) +
+             " is not WxH (width x height in pixels, e.g. 1280x720)");
+    }
+    const std::string width = value.substr(0, x), height = value.substr(x + 1);
+    options.width = parseIntFlag("--size", width, 1, 16384);
+    options.height = parseIntFlag("--size", height, 1, 16384);
+}
+
+}  // namespace
+
+FlagSpec FlagSpec::toggle(std::string name, std::string help) {
+    return {std::move(name), "", std::move(help), Kind::Switch, 0.0, 0.0, 0, {}};
+}
+
+FlagSpec FlagSpec::text(std::string name, std::string valueName, std::string help) {
+    return {std::move(name), std::move(valueName), std::move(help), Kind::Text, 0.0, 0.0, 0, {}};
+}
+
+FlagSpec FlagSpec::outputFolder(std::string name, std::string valueName, std::string help) {
+    return {
+        std::move(name), std::move(valueName), std::move(help), Kind::OutputFolder, 0.0, 0.0, 0, {}};
+}
+
+FlagSpec FlagSpec::integer(std::string name, std::string valueName, std::string help, int min,
+                           int max) {
+    return {std::move(name),
+            std::move(valueName),
+            std::move(help),
+            Kind::Integer,
+            double(min),
+            double(max),
+            0,
+            {}};
+}
+
+FlagSpec FlagSpec::number(std::string name, std::string valueName, std::string help, double min,
+                          double max) {
+    return {std::move(name), std::move(valueName), std::move(help), Kind::Number, min, max, 0, {}};
+}
+
+FlagSpec FlagSpec::numbers(std::string name, std::string valueName, std::string help, int count,
+                           double min, double max) {
+    FlagSpec spec{std::move(name), std::move(valueName), std::move(help), Kind::Numbers, min, max, 0, {}};
+    spec.count = count;
+    return spec;
+}
+
+FlagSpec FlagSpec::choice(std::string name, std::vector<std::string> choices, std::string help) {
+    std::string valueName;
+    for (const std::string& choice : choices) valueName += (valueName.empty() ? "" : "|") + choice;
+    return {std::move(name), std::move(valueName), std::move(help), Kind::Choice, 0.0, 0.0, 0,
+            std::move(choices)};
+}
+
+int parseIntFlag(const std::string& flag, const std::string& value, int min, int max) {
+    long long number = 0;
+    std::errc error{};
+    if (!parseNumber(value, number, error)) {
+        if (error == std::errc::result_out_of_range) {
+            fail(flag + ": " + value + " is out of range [" + std::to_string(min) + ", " +
+                 std::to_string(max) + "]");
+        }
+        fail(flag + ": " + inQuotes(value) + " is not a whole number");
+    }
+    if (number < min || number > max) {
+        fail(flag + ": " + value + " is out of range [" + std::to_string(min) + ", " +
+             std::to_string(max) + "]");
+    }
+    return int(number);
+}
+
+double parseNumberFlag(const std::string& flag, const std::string& value, double min, double max) {
+    double number = 0;
+    std::errc error{};
+    const std::string range =
+        std::string("[").append(formatNumber(min)).append(", ").append(formatNumber(max)) + "]";
+    if (!parseNumber(value, number, error)) {
+        if (error == std::errc::result_out_of_range) {
+            fail(flag + ": " + value + " is out of range " + range);
+        }
+        fail(flag + ": " + inQuotes(value) + " is not a number");
+    }
+    if (!std::isfinite(number)) fail(flag + ": " + inQuotes(value) + " is not a finite number");
+    if (number < min || number > max) fail(flag + ": " + value + " is out of range " + range);
+    return number;
+}
+
+Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec> sampleFlags) {
+    Options options;
+    for (size_t i = 0; i < args.size(); ++i) {
+        std::string flag = args[i];
+        std::optional<std::string> inlineValue;
+        if (auto eq = flag.find('='); flag.rfind("--", 0) == 0 && eq != std::string::npos) {
+            inlineValue = flag.substr(eq + 1);
+            flag = flag.substr(0, eq);
+        }
+        if (flag == "-h") flag = "--help";
+        if (flag.rfind("--", 0) != 0) fail("unexpected argument " + inQuotes(flag));
+
+        const CommonFlag* common = nullptr;
+        for (const CommonFlag& candidate : kCommonFlags) {
+            if (flag == candidate.name) common = &candidate;
+        }
+        const FlagSpec* own = nullptr;
+        for (const FlagSpec& candidate : sampleFlags) {
+            if (flag == candidate.name) own = &candidate;
+        }
+        if (!common && !own) fail("unknown flag " + inQuotes(flag));
+
+        const bool takesValue = common ? common->valueName != nullptr : !own->valueName.empty();
+        std::string value;
+        if (takesValue) {
+            if (inlineValue) {
+                value = *inlineValue;
+            } else if (i + 1 < args.size()) {
+                value = args[++i];
+            } else {
+                fail(flag + ": missing value");
+            }
+        } else if (inlineValue) {
+            fail(flag + ": takes no value");
+        }
+
+        if (own) {
+            checkSampleFlag(*own, value);
+            options.sampleFlags[flag] = value;
+        } else if (flag == "--help") {
+            options.help = true;
+        } else if (flag == "--headless") {
+            options.headless = true;
+        } else if (flag == "--benchmark") {
+            options.benchmark = true;
+        } else if (flag == "--output") {
+            if (value.empty()) fail("--output: empty file name");
+            options.output = value;
+        } else if (flag == "--size") {
+            parseSize(value, options);
+        } else if (flag == "--frames") {
+            options.frames = parseIntFlag("--frames", value, 1, 1000000);
+        } else if (flag == "--time") {
+            options.time = parseNumberFlag("--time", value, -1.0e6, 1.0e6);
+        } else if (flag == "--msaa") {
+            const int samples = parseIntFlag("--msaa", value, 0, kMaxMsaaSamples);
+            if (samples > 1 && (samples & (samples - 1)) != 0) {
+                fail("--msaa: " + value + " is not 0, 1 or a power of two");
+            }
+            options.msaa = samples <= 1 ? 0 : samples;
+        } else if (flag == "--backend") {
+            if (value != "osmesa" && value != "egl" && value != "egl-software") {
+                fail("--backend: " + inQuotes(value) + " is not osmesa, egl or egl-software");
+            }
+            options.backend = value;
+            options.headless = true;
+        } else if (flag == "--camera") {
+            const std::vector<double> numbers =
+                parseNumberList("--camera", value, kMaxCameraCoordinate);
+            if (numbers.size() != 3 && numbers.size() != 5) {
+                fail("--camera: " + inQuotes(value) + " is not x,y,z or x,y,z,yaw,pitch");
+            }
+            CameraStart start{float(numbers[0]), float(numbers[1]), float(numbers[2]), {}, {}};
+            if (numbers.size() == 5) {
+                start.yaw = float(numbers[3]);
+                start.pitch = float(numbers[4]);
+                if (std::abs(numbers[4]) > 89.0) fail("--camera: pitch must lie in [-89, 89]");
+            }
+            options.camera = start;
+        }
+    }
+    return options;
+}
+
+namespace {
+
+// "  --name VALUE" then the help, wrapped at kUsageWidth, every line of it starting at
+// kFlagColumn; a left part too long for the column puts the help on the line below.
+void usageLine(std::ostringstream& out, const std::string& left, const std::string& help) {
+    std::string line = "  " + left;
+    if (line.size() + 2 > kFlagColumn) {
+        out << line << "\n";
+        line.clear();
+    }
+    line.resize(kFlagColumn, ' ');
+    std::istringstream words(help);
+    std::string word;
+    bool first = true;
+    while (words >> word) {
+        if (!first && line.size() + 1 + word.size() > size_t(kUsageWidth)) {
+            out << line << "\n";
+            line = std::string(kFlagColumn, ' ');
+            first = true;
+        }
+        line += (first ? "" : " ") + word;
+        first = false;
+    }
+    out << line << "\n";
+}
+
+}  // namespace
+
+std::string usageText(const std::string& program, std::span<const FlagSpec> sampleFlags,
+                      bool orbitCamera) {
+    std::ostringstream out;
+    out << "usage: " << program << " [flags]\n\nflags every sample takes:\n";
+    for (const CommonFlag& flag : kCommonFlags) {
+        std::string left = flag.name;
+        if (flag.valueName) left.append(" ").append(flag.valueName);
+        usageLine(out, left, flag.help);
+    }
+    if (!sampleFlags.empty()) {
+        out << "\nflags of " << program << ":\n";
+        for (const FlagSpec& flag : sampleFlags) {
+            usageLine(out, flag.name + (flag.valueName.empty() ? "" : " " + flag.valueName),
+                      flag.help);
+        }
+    }
+    out << "\nenvironment:\n";
+    for (const EnvironmentVariable& variable : environmentVariables()) {
+        usageLine(out, variable.name, variable.meaning);
+    }
+    if (orbitCamera) {
+        out << "\nthis sample's camera orbits the model's centre: --camera takes x,y,z only\n"
+               "keys in a window: drag (left button) orbit, scroll dolly, F12 screenshot, R "
+               "reload shaders, Esc quit\n";
+    } else {
+        out << "\nkeys in a window: WASD move, mouse look, scroll zoom, F12 screenshot, R reload "
+               "shaders, Esc quit\n";
+    }
+    return out.str();
+}
+
+}  // namespace pbr

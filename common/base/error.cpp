@@ -1,0 +1,43 @@
+#include "base/error.h"
+
+#include <cstdio>
+#include <exception>
+#include <new>
+
+namespace pbr {
+
+namespace {
+// Keep the promise of one line even when a message carries a newline (a driver's log, say).
+std::string oneLine(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    for (char& c : text) {
+        if (c == '\n' || c == '\r') c = ' ';
+    }
+    return text;
+}
+}  // namespace
+
+int reportFailure() {
+    try {
+        throw;
+    } catch (const ExitRequest& exit) {
+        return exit.code;
+    } catch (const UsageError& e) {
+        // The usage first and the error last, so the line that says what is wrong is the one
+        // nearest the prompt (and what `2>&1 | tail -1` shows).
+        if (!e.usage().empty()) std::fprintf(stderr, "%s\n", e.usage().c_str());
+        std::fprintf(stderr, "error: %s\n", oneLine(e.what()).c_str());
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "error: out of memory\n");
+        return 1;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", oneLine(e.what()).c_str());
+        return 1;
+    } catch (...) {
+        std::fprintf(stderr, "error: unknown failure\n");
+        return 1;
+    }
+}
+
+}  // namespace pbr

@@ -1,0 +1,95 @@
+#include "base/paths.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "base/error.h"
+
+namespace pbr {
+
+namespace fs = std::filesystem;
+
+namespace {
+const char* variable(const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value ? value : nullptr;
+}
+fs::path fromEnvOr(const char* name, const char* fallback) {
+    const char* value = variable(name);
+    return fs::path(value ? value : fallback);
+}
+}  // namespace
+
+fs::path shaderDir() {
+    return fromEnvOr("PBR_SHADER_DIR", PBR_SHADER_DIR);
+}
+fs::path resourceDir() {
+    return fromEnvOr("PBR_RESOURCE_DIR", PBR_RESOURCE_DIR);
+}
+fs::path materialDir() {
+    return resourceDir() / "materials";
+}
+fs::path modelDir() {
+    return resourceDir() / "models";
+}
+fs::path environmentDir() {
+    return resourceDir() / "environments";
+}
+fs::path iblDir() {
+    return resourceDir() / "ibl";
+}
+
+std::optional<fs::path> defaultCacheDir() {
+    if (const char* dir = variable("PBR_CACHE_DIR")) return fs::path(dir);
+    if (const char* dir = variable("XDG_CACHE_HOME")) return fs::path(dir) / "pbr-samples";
+    if (const char* home = variable("HOME")) return fs::path(home) / ".cache" / "pbr-samples";
+    return std::nullopt;
+}
+
+std::vector<EnvironmentVariable> environmentVariables() {
+    return {
+        // The defaults in words, not as the build's paths: a checkout's path is as long as its
+        // owner made it, and the usage must read the same from any of them.
+        {"PBR_SHADER_DIR", "the GLSL files (default: shaders/ of the source tree built)"},
+        {"PBR_RESOURCE_DIR",
+         "the assets the build makes: materials/, models/, environments/ (default: the "
+         "build's resources/ folder)"},
+        {"PBR_CACHE_DIR",
+         "the IBL samples' precomputed maps (default: "
+         "$XDG_CACHE_HOME/pbr-samples, else $HOME/.cache/pbr-samples)"},
+        {"DISPLAY, WAYLAND_DISPLAY",
+         "a window needs one of them; without, the sample renders "
+         "offscreen and says so"},
+    };
+}
+
+std::string displayPath(const fs::path& path) {
+    std::error_code ec;
+    fs::path absolute = fs::absolute(path, ec);
+    if (ec) return path.string();
+    absolute = absolute.lexically_normal();
+    fs::path relative = absolute.lexically_relative(fs::current_path(ec));
+    if (!ec && !relative.empty() && *relative.begin() != "..") return relative.string();
+    return absolute.string();
+}
+
+std::string utf8Path(const fs::path& path) {
+    const std::u8string text = path.u8string();
+    return std::string(text.begin(), text.end());
+}
+
+std::string readTextFile(const fs::path& path) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw Error(displayPath(path) + ": is a directory, not a file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(displayPath(path) + ": cannot open: " + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw Error(displayPath(path) + ": read failed");
+    return text.str();
+}
+
+}  // namespace pbr

@@ -1,0 +1,29 @@
+#pragma once
+// What the browser build (PBR_WEBGL, see gl.h) needs from the page its sample runs in; on the
+// desktop these do nothing.
+//
+// The page (web/shell.html) shows every file the run writes as a download link and keeps its
+// bytes (base64) in the DOM, where a test reads them back; and the frame loop gives the browser
+// its turn between frames, so that it can show the canvas and deliver input.
+#include <filesystem>
+
+#include "gl/gl.h"
+
+namespace pbr::web {
+
+#ifdef PBR_WEBGL
+// Hands a file the run has written (in the page's memory file system) to the page.
+void handOver(const std::filesystem::path& path);
+// Returns at the browser's next animation frame (the sample's loop is suspended meanwhile).
+void waitForNextFrame();
+// Once main() has waited for a frame, the browser no longer sees what it returns (emscripten
+// 3.1.6 drops the return value of a main that resumed): the App says how the run ended as it
+// goes, and the page exits with that code right after main() returns.
+void exitWithAfterMain(int code);
+#else
+inline void handOver(const std::filesystem::path&) {}
+inline void waitForNextFrame() {}
+inline void exitWithAfterMain(int) {}
+#endif
+
+}  // namespace pbr::web

@@ -1,0 +1,330 @@
+#include "files/image.h"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string_view>
+
+#include "base/error.h"
+#include "base/output.h"
+#include "base/paths.h"
+
+namespace pbr {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool startsWith(const std::vector<std::uint8_t>& bytes, std::initializer_list<std::uint8_t> magic) {
+    return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin());
+}
+
+// stb_image's failure codes ("outofdata", "bad zlib header", ...) in words a user understands.
+std::string decodeFailure(const std::vector<std::uint8_t>& bytes) {
+    const std::string code = stbi_failure_reason() ? stbi_failure_reason() : "";
+    if (code == "outofmem") return "out of memory while decoding the image";
+    if (code == "too large") return "image too large to decode";
+    if (code == "0-pixel image" || code == "0 width" || code == "invalid width")
+        return "the image has no pixels";
+    const bool png = startsWith(bytes, {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'});
+    const bool jpeg = startsWith(bytes, {0xff, 0xd8, 0xff});
+    if (png) {
+        if (code == "1/2/4/8/16-bit only") return "unsupported PNG bit depth";
+        return "truncated or damaged PNG data";
+    }
+    if (jpeg) {
+        if (code == "only 8-bit") return "unsupported JPEG (12-bit samples)";
+        if (code == "no header height") return "unsupported JPEG (height given after the pixels)";
+        return "truncated or damaged JPEG data";
+    }
+    if (code == "unknown image type") return "not a PNG or JPEG image";
+    return "damaged or unsupported image data";
+}
+
+}  // namespace
+
+Image readImage(const fs::path& path, int wantChannels) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw Error(displayPath(path) + ": no such file");
+    if (fs::is_directory(path, ec)) throw Error(displayPath(path) + ": is a directory");
+    const std::string text = readTextFile(path);
+    if (text.empty()) throw Error(displayPath(path) + ": empty file");
+    return decodeImage(std::vector<std::uint8_t>(text.begin(), text.end()), displayPath(path),
+                       wantChannels);
+}
+
+Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& what,
+                  int wantChannels) {
+    if (bytes.empty()) throw Error(what + ": empty image");
+    if (bytes.size() > size_t(std::numeric_limits<int>::max()))
+        throw Error(what + ": image file too large");
+    int width = 0, height = 0, channels = 0;
+    // A damaged header may claim any size: refuse more than 2^28 pixels (16384^2) before stb
+    // allocates for them.
+    if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels) &&
+        double(width) * double(height) > double(1 << 28)) {
+        throw Error(what + ": image too large (" + std::to_string(width) + " x " +
+                    std::to_string(height) + " pixels)");
+    }
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(
+        stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels,
+                              wantChannels),
+        stbi_image_free);
+    if (!data) throw Error(what + ": " + decodeFailure(bytes));
+    Image image{width, height, wantChannels ? wantChannels : channels, {}};
+    image.pixels.assign(data.get(),
+                        data.get() + size_t(width) * size_t(height) * size_t(image.channels));
+    return image;
+}
+
+namespace {
+// stb's writers hand over the encoded bytes in pieces; they are kept in memory, then written whole.
+void appendBytes(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), size_t(size));
+}
+}  // namespace
+
+std::string encodePng(const Image& image) {
+    if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 ||
+        image.pixels.size() !=
+            size_t(image.width) * size_t(image.height) * size_t(image.channels)) {
+        throw Error("cannot encode an empty or malformed image as PNG");
+    }
+    std::string bytes;
+    if (!stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, image.channels,
+                                image.pixels.data(), image.width * image.channels)) {
+        throw Error("PNG encoding failed");
+    }
+    return bytes;
+}
+
+void writePng(const fs::path& path, const Image& image) {
+    writeFileAtomically(path, [&] { return encodePng(image); });
+}
+
+namespace {
+// The Radiance RGBE pixel as a float triple, exactly as stb_image converts it (mantissa times
+// 2^(exponent - 136); exponent 0 is black), so that our decoder and stb's agree to the bit.
+void rgbeToFloat(const std::uint8_t* rgbe, float* rgb) {
+    if (rgbe[3] == 0) {
+        rgb[0] = rgb[1] = rgb[2] = 0.0f;
+        return;
+    }
+    const auto scale = float(std::ldexp(1.0f, int(rgbe[3]) - (128 + 8)));
+    for (int c = 0; c < 3; ++c) rgb[c] = float(rgbe[c]) * scale;
+}
+}  // namespace
+
+// A decoder of our own rather than stb_image's: Debian's stb loops forever on a truncated
+// run-length scanline (a zero count makes no progress), and a sample must refuse such a file.
+HdrImage decodeHdr(std::string_view bytes, const std::string& name) {
+    size_t at = 0;
+    auto fail = [&](const std::string& reason) { return Error(name + ": " + reason); };
+    auto line = [&]() -> std::optional<std::string_view> {
+        const size_t end = bytes.find('\n', at);
+        if (end == std::string_view::npos) return std::nullopt;
+        const std::string_view text = bytes.substr(at, end - at);
+        at = end + 1;
+        return text;
+    };
+    const auto magic = line();
+    if (!magic || (*magic != "#?RADIANCE" && *magic != "#?RGBE")) {
+        throw fail("not a Radiance .hdr file (no #?RADIANCE line)");
+    }
+    bool rgbe = false;
+    for (;;) {
+        const auto header = line();
+        if (!header) throw fail("truncated in the header");
+        if (header->empty()) break;
+        if (*header == "FORMAT=32-bit_rle_rgbe") rgbe = true;
+        if (header->starts_with("FORMAT=") && !rgbe) {
+            throw fail("unsupported pixel format (" + std::string(*header) +
+                       "; only 32-bit_rle_rgbe)");
+        }
+    }
+    if (!rgbe) throw fail("no FORMAT=32-bit_rle_rgbe line in the header");
+    const auto resolution = line();
+    int width = 0, height = 0;
+    char extra = 0;
+    if (!resolution || std::sscanf(std::string(*resolution).c_str(), "-Y %d +X %d%c", &height,
+                                   &width, &extra) != 2) {
+        throw fail("unsupported resolution line (only \"-Y <height> +X <width>\", rows top first)");
+    }
+    constexpr int kMaxSide = 32768;
+    if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide) {
+        throw fail("image size " + std::to_string(width) + " x " + std::to_string(height) +
+                   " out of range (1 to " + std::to_string(kMaxSide) + " a side)");
+    }
+    // The fewest bytes the pixels can take (runs of 127 at best): refuse a short file before
+    // allocating for the size its header claims.
+    const bool runLength = width >= 8 && width < 32768;
+    const size_t leastBytes =
+        size_t(height) * std::min(size_t(width) * 4, 4 + 8 * ((size_t(width) + 126) / 127));
+    if (bytes.size() - at < (runLength ? leastBytes : size_t(width) * size_t(height) * 4)) {
+        throw fail("truncated (" + std::to_string(width) + " x " + std::to_string(height) +
+                   " pixels need more data than the file holds)");
+    }
+
+    HdrImage image{width, height, std::vector<float>(size_t(width) * size_t(height) * 3)};
+    auto next = [&]() -> std::uint8_t {
+        if (at >= bytes.size()) throw fail("truncated in the pixel data");
+        return std::uint8_t(bytes[at++]);
+    };
+    auto flat = [&](size_t firstPixel) {
+        for (size_t i = firstPixel; i < size_t(width) * size_t(height); ++i) {
+            std::uint8_t pixel[4];
+            for (std::uint8_t& byte : pixel) byte = next();
+            rgbeToFloat(pixel, &image.pixels[i * 3]);
+        }
+    };
+    // Uncompressed files start straight with pixels; run-length rows start with 2, 2, width.
+    if (!runLength || bytes[at] != 2 || bytes[at + 1] != 2 || (bytes[at + 2] & 0x80)) {
+        flat(0);
+        return image;
+    }
+    std::vector<std::uint8_t> scanline(size_t(width) * 4);
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t a = next(), b = next(), hi = next(), lo = next();
+        if (a != 2 || b != 2 || ((hi << 8) | lo) != width) {
+            throw fail("bad scanline header in row " + std::to_string(y));
+        }
+        for (int channel = 0; channel < 4; ++channel) {
+            for (int x = 0; x < width;) {
+                int count = next();
+                const bool run = count > 128;
+                if (run) count -= 128;
+                if (count == 0 || count > width - x) {
+                    throw fail("bad run-length data in row " + std::to_string(y));
+                }
+                const std::uint8_t value = run ? next() : 0;
+                for (int k = 0; k < count; ++k, ++x) {
+                    scanline[size_t(x) * 4 + size_t(channel)] = run ? value : next();
+                }
+            }
+        }
+        for (int x = 0; x < width; ++x) {
+            rgbeToFloat(&scanline[size_t(x) * 4],
+                        &image.pixels[(size_t(y) * size_t(width) + size_t(x)) * 3]);
+        }
+    }
+    return image;
+}
+
+float maxValue(const HdrImage& image) {
+    float largest = 0.0f;
+    for (const float value : image.pixels) largest = std::max(largest, value);
+    return largest;
+}
+
+bool fitsHalfFloat(const HdrImage& image) {
+    return maxValue(image) <= kMaxHalfFloat;
+}
+
+HdrImage readHdr(const fs::path& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) throw Error(displayPath(path) + ": no such file");
+    if (fs::is_directory(path, ec)) throw Error(displayPath(path) + ": is a directory, not a file");
+    const std::string bytes = readTextFile(path);
+    if (bytes.empty()) throw Error(displayPath(path) + ": empty file");
+    return decodeHdr(bytes, displayPath(path));
+}
+
+std::string encodeHdr(const HdrImage& image) {
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != size_t(image.width) * size_t(image.height) * 3) {
+        throw Error("cannot write an empty or malformed HDR image");
+    }
+    std::string bytes;
+    if (!stbi_write_hdr_to_func(appendBytes, &bytes, image.width, image.height, 3,
+                                image.pixels.data())) {
+        throw Error("HDR encoding failed");
+    }
+    return bytes;
+}
+
+void writeHdr(const fs::path& path, const HdrImage& image) {
+    writeFileAtomically(path, [&] { return encodeHdr(image); });
+}
+
+Image flipRows(const Image& image) {
+    Image flipped = image;
+    const size_t rowBytes = size_t(image.width) * size_t(image.channels);
+    for (int y = 0; y < image.height; ++y) {
+        std::copy_n(
+            image.pixels.begin() + std::ptrdiff_t(size_t(y) * rowBytes), rowBytes,
+            flipped.pixels.begin() + std::ptrdiff_t(size_t(image.height - 1 - y) * rowBytes));
+    }
+    return flipped;
+}
+
+namespace {
+int colourChannels(const Image& image) {
+    return image.channels >= 3 ? 3 : 1;
+}
+
+void requireSameShape(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height) {
+        throw Error("images differ in size: " + std::to_string(a.width) + "x" +
+                    std::to_string(a.height) + " vs " + std::to_string(b.width) + "x" +
+                    std::to_string(b.height));
+    }
+    if (colourChannels(a) != colourChannels(b)) throw Error("images differ in colour channels");
+}
+}  // namespace
+
+ImageDiff compareImages(const Image& actual, const Image& expected, int threshold) {
+    requireSameShape(actual, expected);
+    ImageDiff diff;
+    const int channels = colourChannels(actual);
+    double squaredSum = 0.0, absSum = 0.0;
+    for (int y = 0; y < actual.height; ++y) {
+        for (int x = 0; x < actual.width; ++x) {
+            int pixelMax = 0;
+            for (int c = 0; c < channels; ++c) {
+                const int d = std::abs(int(actual.at(x, y, c)) - int(expected.at(x, y, c)));
+                pixelMax = std::max(pixelMax, d);
+                squaredSum += double(d) * d;
+                absSum += d;
+            }
+            diff.maxChannelDiff = std::max(diff.maxChannelDiff, pixelMax);
+            if (pixelMax > threshold) ++diff.pixelsOverThreshold;
+        }
+    }
+    const double samples = double(actual.width) * actual.height * channels;
+    const double pixels = double(actual.width) * actual.height;
+    diff.fractionOverThreshold = double(diff.pixelsOverThreshold) / pixels;
+    diff.meanAbsDiff = absSum / samples;
+    const double mse = squaredSum / samples;
+    diff.psnr = mse == 0.0 ? std::numeric_limits<double>::infinity()
+                           : 10.0 * std::log10(255.0 * 255.0 / mse);
+    return diff;
+}
+
+Image differenceImage(const Image& actual, const Image& expected, int gain) {
+    requireSameShape(actual, expected);
+    const int channels = colourChannels(actual);
+    Image out{actual.width, actual.height, 3, {}};
+    out.pixels.resize(size_t(out.width) * size_t(out.height) * 3);
+    for (int y = 0; y < actual.height; ++y) {
+        for (int x = 0; x < actual.width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const int source = channels == 3 ? c : 0;
+                const int d =
+                    std::abs(int(actual.at(x, y, source)) - int(expected.at(x, y, source)));
+                out.pixels[(size_t(y) * size_t(out.width) + size_t(x)) * 3 + size_t(c)] =
+                    std::uint8_t(std::min(255, d * gain));
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace pbr

@@ -1,0 +1,23 @@
+#pragma once
+// The glTF samples' whole program (07 metallic-roughness, 08 specular-glossiness): a glTF file
+// drawn by GltfRenderer under 05's image-based light and the file's punctual lights, through an
+// orbit camera and a tone mapper, with the flags both samples share (--model, --hdr, --no-cache,
+// --tonemap, --exposure, --no-ibl, --no-punctual, --single-scattering). A sample names itself and
+// its default asset.
+#include <filesystem>
+#include <string>
+
+namespace pbr {
+
+struct GltfViewerConfig {
+    std::string name;                     // "07_gltf_metallic_roughness": messages, --help
+    std::string title;                    // the window's
+    std::filesystem::path defaultModel;   // drawn without --model
+    std::string defaultModelDescription;  // for --help: "the project's PBR showcase"
+};
+
+// Runs the sample to its end; returns the exit code. Throws Error for bad input (the caller's
+// catch reports it, as every sample's main does).
+int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config);
+
+}  // namespace pbr

@@ -1,0 +1,101 @@
+#pragma once
+// The IBL maps on disk: each precomputed map is kept as a KTX 1 file (the format sample 06
+// writes and the cookbook's tools read) whose metadata holds a key naming everything the map was
+// made from: the input file's content hash, the parameters, the shader code and the GL renderer.
+// A file is used only when it reads back whole and its key matches; a damaged or stale file is
+// reported in one line, recomputed and replaced, never drawn.
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "app/options.h"
+#include "files/ktx.h"
+#include "gl/texture.h"
+#include "ibl/ibl.h"
+
+namespace pbr {
+
+// The flags every IBL sample takes: --hdr FILE and --no-cache.
+std::vector<FlagSpec> iblFlags();
+// The environment --hdr names, else the project's (sunny_courtyard.hdr).
+std::filesystem::path environmentFile(const Options& options);
+// The cache folder to use: none with --no-cache, else defaultCacheDir() (paths.h).
+std::optional<std::filesystem::path> cacheDir(const Options& options);
+
+// A precomputed map as a file: the name it has in the cache (and in 06's output folder), the key
+// it is made under, and what it holds. The cache and 06 write it with the same metadata, so the
+// two files are the same bytes.
+struct MapFile {
+    std::string name;      // "sunny_courtyard.irradiance.ktx"
+    std::string key;       // input hash, parameters, shader code, renderer
+    std::string contents;  // one line for people: sizes, what each channel holds
+
+    // `image` with this map's metadata: pbr.cacheKey, pbr.contents and its orientation.
+    KtxImage withMetadata(KtxImage image) const;
+};
+
+class IblCache {
+public:
+    // `dir` nullopt: no cache, everything is computed (what --no-cache asks for).
+    explicit IblCache(std::optional<std::filesystem::path> dir);
+
+    // <dir>/<file.name> when it holds a map made under `file.key`, else `compute()` (stored for
+    // next time). A texture (a BRDF LUT) is first looked for in iblDir(), where the build bakes
+    // it, cache or no cache.
+    TextureCube cube(const MapFile& file, const std::function<TextureCube()>& compute);
+    Texture2D texture(const MapFile& file, KtxFormat format,
+                      const std::function<Texture2D()>& compute);
+
+    // Seconds spent computing maps (not loading them), GPU work finished.
+    double computeSeconds() const { return computeSeconds_; }
+
+private:
+    std::optional<KtxImage> load(const std::filesystem::path& path, const std::string& key);
+    std::optional<Texture2D> loadTexture(const std::filesystem::path& path, const MapFile& file,
+                                         KtxFormat format);
+    void store(const MapFile& file, KtxImage image);
+    template <typename T>
+    T timed(const std::function<T()>& compute);
+
+    std::optional<std::filesystem::path> dir_;
+    double computeSeconds_ = 0.0;
+};
+
+// A 64-bit FNV-1a hash as 16 hex digits: the content part of a cache key.
+std::string contentHash(std::string_view bytes);
+
+// One HDR environment and the maps image-based lighting derives from it, through the cache.
+// The file is hashed at once (an unreadable file is an Error naming it); it is decoded only when
+// a map has to be computed.
+class IblEnvironment {
+public:
+    IblEnvironment(IblCache& cache, std::filesystem::path hdr);
+
+    const TextureCube& environmentMap();  // 512^2, RGB16F, full mip chain
+    TextureCube irradianceMap(int size = 32, float sampleDelta = kIrradianceSampleDelta);
+    TextureCube prefilteredMap(int size = 128, int levels = 5, int samples = kPrefilterSamples);
+
+    // What each map is as a file (see MapFile): 06 writes the maps under these names.
+    MapFile environmentFile() const;
+    MapFile irradianceFile(int size = 32, float sampleDelta = kIrradianceSampleDelta) const;
+    MapFile prefilteredFile(int size = 128, int levels = 5, int samples = kPrefilterSamples) const;
+
+private:
+    IblCache& cache_;
+    std::filesystem::path hdr_;
+    static constexpr int kEnvironmentSize = 512;
+    std::string environmentKey_;  // what the environment cube is made from; every map's source
+    std::optional<TextureCube> environment_;
+};
+
+// The BRDF LUT (see computeBrdfLut) through the cache, and what it is as a file: RG16F for
+// ScaleBias, RGBA16F for ScaleBiasSheen. It depends on no input, so the build bakes the ones the
+// samples use into iblDir() (resources/ibl) and a start reads them from there. Its key names no
+// renderer: a table made on one GL implementation serves every other.
+Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channels);
+MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels);
+KtxFormat brdfLutFormat(BrdfLutChannels channels);
+
+}  // namespace pbr

@@ -1,0 +1,113 @@
+#pragma once
+// The Cook-Torrance BRDF of the tutorial on the CPU (GLM only, no GL): the same functions with the
+// same names as shaders/include/brdf.glsl, so tests can shade a pixel independently of the GPU.
+#include <span>
+
+#include <glm/glm.hpp>
+
+#include "math/light_block.h"
+#include "math/punctual_light.h"
+
+namespace pbr::cpu {
+
+float DistributionGGX(const glm::vec3& N, const glm::vec3& H, float roughness);
+float GeometrySchlickGGX(float NdotV, float roughness);
+float GeometrySmith(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L, float roughness);
+glm::vec3 fresnelSchlick(float cosTheta, const glm::vec3& F0);
+
+struct PointLight {
+    glm::vec3 position;
+    glm::vec3 color;
+};
+
+struct SurfacePoint {
+    glm::vec3 position;  // world space
+    glm::vec3 normal;    // unit
+    glm::vec3 albedo;    // linear
+    float metallic = 0.0f;
+    float roughness = 0.5f;
+    float ao = 1.0f;
+};
+
+// Radiance leaving `surface` towards `cameraPosition`: the sum over point lights (1/d^2 falloff)
+// plus the tutorial's constant ambient 0.03 * albedo * ao. Linear, before tone mapping.
+glm::vec3 shadePointLights(const SurfacePoint& surface, const glm::vec3& cameraPosition,
+                           std::span<const PointLight> lights);
+
+// One light's share: (kD albedo / pi + specular) radiance NdotL, the text's integrand for one
+// direction (directLight of brdf.glsl).
+glm::vec3 directLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                      const glm::vec3& radiance, const glm::vec3& albedo, float metallic,
+                      float roughness);
+
+// Sample 09: the Overload engine's five light types (light_types.glsl) at `surface`: the direct
+// lights through directLight, plus ambient x albedo x ao from every ambient volume holding the
+// point (no constant ambient). Linear, before tone mapping.
+glm::vec3 shadeLightTypes(const SurfacePoint& surface, const glm::vec3& cameraPosition,
+                          std::span<const PackedLight> lights);
+// The parts, for tests: 1 / (c + l d + q d^2); the spot's cone factor for the unit direction
+// from the point towards the light; whether a point lies in an ambient volume.
+float lightAttenuation(const PackedLight& light, float distance);
+float spotCone(const PackedLight& light, const glm::vec3& toLight);
+bool insideAmbientVolume(const PackedLight& light, const glm::vec3& point);
+
+// Reference values of the BRDF LUT by deterministic numerical quadrature, not sampling: the
+// integrand is summed over half vectors h with Gauss-Legendre rules on panels of theta_h graded
+// towards where each lobe concentrates (around the normal for GGX, at the horizon for Charlie),
+// and the midpoint rule in phi_h; light direction l = reflect(-v, h), dl = 4 (v.h) dh. Double
+// precision. Independent of the shaders' importance sampling, so it can judge them.
+//
+// The split-sum integral of the GGX specular lobe (Karis): the scale (x) and bias (y) to F0,
+//   x = integral of D G (1 - Fc) / (4 NdotL NdotV) NdotL dl,   y = the same with Fc,
+// Fc = (1 - VdotH)^5, D = GGX with alpha = roughness^2, G = Smith-Schlick with k = roughness^2 / 2.
+glm::dvec2 splitSumQuadrature(double NdotV, double roughness);
+// The directional albedo of Charlie sheen (Estevez and Kulla; Ashikhmin's visibility), what the
+// LUT's B channel holds: integral of D_Charlie(alpha = roughness^2) V_Ashikhmin NdotL dl.
+double sheenQuadrature(double NdotV, double roughness);
+// The same sums over light directions directly, on a uniform grid of `steps` x 4 `steps`
+// midpoints in (theta_l, phi_l): slow, and fit only for wide lobes (roughness >= 0.4); kept as
+// a check of the half-vector quadrature itself.
+glm::dvec3 bruteForceLut(double NdotV, double roughness, int steps);
+
+// ---- glTF 2.0, Appendix B, and KHR_lights_punctual (the glTF samples 07, 08) ----
+// The same functions as shaders/include/brdf.glsl and punctual_lights.glsl.
+float D_GGX(float NdotH, float alpha);
+float V_GGX(float NdotL, float NdotV, float alpha);
+constexpr float kMinGgxAlpha = 0.002f;  // MIN_GGX_ALPHA of brdf.glsl
+// A surface as the Appendix B implementation takes it (both workflows end here): a dielectric
+// layer (diffuse colour c_diff under a specular layer of reflectance F0) and a metal of colour
+// metalColor, mixed by metallic.
+struct GltfSurface {
+    glm::vec3 position;  // world space
+    glm::vec3 normal;    // unit, shading normal
+    glm::vec3 diffuseColor;
+    glm::vec3 F0;
+    float roughness = 0.5f;  // perceptual
+    glm::vec3 metalColor{0.0f};
+    float metallic = 0.0f;
+};
+// The metallic-roughness workflow: c_diff = metalColor = base colour, F0 = 0.04.
+GltfSurface metallicRoughnessSurface(const glm::vec3& position, const glm::vec3& normal,
+                                     const glm::vec3& baseColor, float metallic, float roughness);
+// KHR_materials_pbrSpecularGlossiness' conversion: F0 = specular, roughness = 1 - glossiness,
+// c_diff = diffuse x (1 - the largest component of specular), metallic 0.
+GltfSurface specularGlossinessSurface(const glm::vec3& position, const glm::vec3& normal,
+                                      const glm::vec3& diffuse, const glm::vec3& specular,
+                                      float glossiness);
+// mix(dielectric BRDF, metal BRDF, metallic) for one light (brdf.glsl's gltfDirectLight).
+glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                          const glm::vec3& radiance, const GltfSurface& surface);
+float rangeAttenuation(float range, float distance);
+float spotAttenuation(const glm::vec3& lightToPoint, const glm::vec3& spotDirection,
+                      float outerConeCos, float innerConeCos);
+// The radiance `light` brings to `position`, and the unit direction towards it in `L`.
+glm::vec3 punctualRadiance(const PunctualLight& light, const glm::vec3& position, glm::vec3& L);
+// Radiance towards `cameraPosition` from the punctual lights (no image-based light, no
+// emission), linear, before exposure and tone mapping.
+glm::vec3 shadePunctualLights(const GltfSurface& surface, const glm::vec3& cameraPosition,
+                              std::span<const PunctualLight> lights);
+
+// Reinhard c / (c + 1), then gamma 1/2.2: what the direct-light samples write.
+glm::vec3 reinhardGamma(const glm::vec3& color);
+
+}  // namespace pbr::cpu
