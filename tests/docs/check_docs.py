@@ -5,13 +5,19 @@
   flags          every flag in a README's flag table, or in a command it shows, is in that
                  sample's --help; every flag a sample's --help lists is in its README
   links          every relative link and picture resolves, #anchors included, inside the repo;
-                 no README cites a file outside the repository
-  golden-update  the README's golden-update command selects the test of every golden picture
+                 no README cites a file outside the repository; the web gallery renders each
+                 sample README's opening whole, code spans literal (web/gallery.py --check)
+  golden-update  the one golden-update command the docs show selects the test of every golden
   runnable       every command in a code block marked <!-- runnable --> runs and exits 0
   environment    every environment variable the code reads is in README.md and in --help, and
                  every PBR_ variable the READMEs name is read by the code
   build-sh       ./build.sh -h and --help print the usage, a bad argument is named, and
                  `./build.sh run` takes relative paths from the caller's folder
+  code-names     in each sample README's text-to-code table ("| the text | here |"), every code
+                 name on our side is an identifier of the files its row links or names
+                 (`pbr::FlyCamera` as FlyCamera), every number there a literal of them (on the
+                 line of a name its clause gives, if any), and a row whose text names those
+                 files lack gives a name of ours
 
 usage: check_docs.py CHECK --source DIR --build DIR
 Prints one line per broken promise and exits 1 when there is any.
@@ -34,8 +40,10 @@ def fail(message):
 
 
 def readmes(source):
+    """Every page of the docs: README.md, each sample's README.md and the pages in docs/."""
     found = [source / "README.md"]
     found += sorted((source / "samples").glob("*/README.md"))
+    found += sorted((source / "docs").glob("*.md"))
     return found
 
 
@@ -199,15 +207,21 @@ def check_links(source, build):
                 fail(f"{rel(readme, source)}: link {target}: no heading #{anchor} in {path.name}")
     if checked == 0:
         fail("no relative link found: the check found nothing to check")
+    gallery = subprocess.run([sys.executable, str(source / "web" / "gallery.py"), "--check",
+                              "--source", str(source)], capture_output=True, text=True)
+    for line in gallery.stdout.splitlines():
+        fail(line.removeprefix("FAIL: "))
+    if gallery.returncode != 0 and not gallery.stdout.strip():
+        fail(f"web/gallery.py --check exits {gallery.returncode}: {gallery.stderr.strip()}")
 
 
 def check_golden_update(source, build):
-    text = (source / "README.md").read_text()
-    lines = [l.split("#")[0].strip() for _, body in code_blocks(text) for l in body
+    lines = [l.split("#")[0].strip() for readme in readmes(source)
+             for _, body in code_blocks(readme.read_text()) for l in body
              if "PBR_UPDATE_GOLDENS=1" in l]
     if len(lines) != 1:
-        fail(f"README.md should show one golden-update command (PBR_UPDATE_GOLDENS=1 ...); "
-             f"it shows {len(lines)}")
+        fail(f"the docs should show one golden-update command (PBR_UPDATE_GOLDENS=1 ...) in a "
+             f"code block; they show {len(lines)}")
         return
     words = shlex.split(lines[0])
     if words[:2] != ["PBR_UPDATE_GOLDENS=1", "ctest"]:
@@ -299,7 +313,7 @@ def cmake_options(source):
         text = path.read_text(errors="replace")
         names |= set(re.findall(r"option\(\s*(PBR_[A-Z_]+)", text))
         names |= set(re.findall(r"set\(\s*(PBR_[A-Z_]+)[^)]*\bCACHE\b", text))
-    for path in (source / "common").glob("*.h"):  # the code's own switches (PBR_WEBGL)
+    for path in (source / "common").rglob("*.h"):  # the code's own switches (PBR_WEBGL)
         names |= set(re.findall(r"#define (PBR_[A-Z_]+)", path.read_text(errors="replace")))
     return names
 
@@ -355,6 +369,136 @@ def check_build_sh(source, build):
              f"{(run.stderr.strip().splitlines() or [''])[-1]}")
 
 
+CODE_SUFFIXES = (".cpp", ".h", ".glsl", ".frag", ".vert", ".py", ".cmake", ".txt")
+
+
+def text_to_code_rows(text):
+    """The rows of a sample README's text-to-code tables (header "| the text | <ours> |"), as
+    (line number, the text's cell, our cell)."""
+    rows, lines = [], text.splitlines()
+    for i, line in enumerate(lines):
+        if not re.match(r"\|\s*the text\s*\|", line, re.I):
+            continue
+        for j in range(i + 2, len(lines)):
+            if not lines[j].startswith("|"):
+                break
+            cells = [c.strip() for c in re.split(r"(?<!\\)\|", lines[j].strip())[1:-1]]
+            if len(cells) >= 2:
+                rows.append((j + 1, cells[0], cells[1]))
+    return rows
+
+
+def named_file(name, readme, linked, source):
+    """The file a bare `name.glsl` in a table means: one the table links with that name, else
+    one in the sample's own folders, else the only one in the repository with that name."""
+    for path in linked:
+        if path.as_posix().endswith("/" + name):
+            return path
+    sample = readme.parent.name
+    for folder in (readme.parent, source / "shaders" / sample):
+        if (folder / name).is_file():
+            return folder / name
+    found = [p for folder in ("common", "shaders", "samples", "tests", "tools", "resources")
+             for p in (source / folder).rglob(name.split("/")[-1])
+             if p.as_posix().endswith("/" + name)]
+    return found[0] if len(found) == 1 else None
+
+
+def literal_in(number, text):
+    """Whether `number` (as the README writes it) is a numeric literal of `text`: 256 matches
+    256, 256u, 256.0f; 0.5 matches 0.5 and 0.50."""
+    body = re.escape(number) + (r"0*" if "." in number else r"(?:\.0*)?")
+    return re.search(r"(?<![\w.])" + body + r"(?![\d.])", text) is not None
+
+
+def code_links(cell, readme):
+    """The code files a table cell links (not READMEs, not URLs), resolved."""
+    return {(readme.parent / t).resolve() for t in re.findall(r"\]\(([^)\s#]+)[^)]*\)", cell)
+            if not re.match(r"[a-z]+:", t) and t.endswith(CODE_SUFFIXES)}
+
+
+def read_all(files):
+    return "\n".join(p.read_text(errors="replace") for p in sorted(files) if p.is_file())
+
+
+def has_name(name, code):
+    return re.search(r"\b" + re.escape(name) + r"\b", code) is not None
+
+
+def check_code_names(source, build):
+    """Our side of a row is read clause by clause (split at ';'): a clause's names and numbers
+    are looked up in the files that clause links or names, or else in those of the whole row; a
+    number in a clause that names code must stand on a line with one of those names (256 on the
+    line of kPrefilterSamples), or anywhere in the files when the clause names none."""
+    del build
+    checked = 0
+    for readme in sorted((source / "samples").glob("*/README.md")):
+        where = rel(readme, source)
+        rows = text_to_code_rows(readme.read_text())
+        table_links = set().union(*(code_links(ours, readme) for _, _, ours in rows))
+        for line, theirs, ours in rows:
+            label = theirs.replace("`", "")
+            row = f'{where}:{line}, row "{label[:40]}{"..." if len(label) > 40 else ""}"'
+            clauses = []  # (files, names, numbers) of each clause
+            for clause in re.split(r";(?=(?:[^`]*`[^`]*`)*[^`]*$)", ours):
+                files = code_links(clause, readme)
+                prose = re.sub(r"\[[^\]]*\]\([^)]*\)", " ", clause)  # link texts: paths, "02"
+                prose = re.sub(r"(?<=\d),(?=\d{3}\b)", "", prose)  # 1,024 is 1024
+                names, numbers = [], []
+                for span in code_spans(prose):
+                    if span.startswith("-"):
+                        continue  # a flag: the flags check's
+                    if re.fullmatch(r"[\w./-]+\.(?:cpp|h|glsl|frag|vert)", span):
+                        path = named_file(span, readme, table_links, source)
+                        if path is None:
+                            fail(f"{row} names the file {span}, which is not one file of the repo")
+                        else:
+                            files.add(path.resolve())
+                    else:
+                        names.append(span)
+                for number in re.findall(r"(?<![\w.^])(\d+(?:\.\d+)?)(?![\w.])",
+                                         re.sub(r"`[^`\n]+`", " ", prose)):
+                    if not re.fullmatch(r"0\d", number):  # 04, 05: a sample, not a number
+                        numbers.append(number)
+                clauses.append((files, names, numbers))
+            row_files = set().union(*(files for files, _, _ in clauses))
+            for files, names, numbers in clauses:
+                files = files or row_files
+                if (names or numbers) and not files:
+                    fail(f"{row}: our side names {', '.join(names + numbers)} but links no file")
+                    continue
+                code = read_all(files)
+                shown = ", ".join(sorted(str(p.relative_to(source)) for p in files))
+                idents = []
+                for span in names:
+                    checked += 1
+                    m = re.fullmatch(r"(?:[A-Za-z_]\w*::)*([A-Za-z_]\w*)(?:\(\))?", span)
+                    if m:
+                        idents.append(m.group(1))
+                    if (m and not has_name(m.group(1), code)) or (not m and span not in code):
+                        fail(f"{row}: `{span}` is not in {shown}")
+                lines = [l for l in code.splitlines() if any(has_name(i, l) for i in idents)]
+                for number in numbers:
+                    checked += 1
+                    if idents and not any(literal_in(number, l) for l in lines):
+                        fail(f"{row}: the number {number} is on no line of {shown} that names "
+                             f"{' or '.join(idents)}")
+                    elif not idents and not literal_in(number, code):
+                        fail(f"{row}: the number {number} is not a literal of {shown}")
+            # A name of the text's that our files lack must be mapped to a name of ours.
+            code = read_all(row_files)
+            absent = [s.rstrip("()") for s in code_spans(theirs)
+                      if re.fullmatch(r"[A-Za-z_]\w*(?:\(\))?", s)
+                      and not has_name(s.rstrip("()"), code)]
+            if absent and not any(names for _, names, _ in clauses):
+                shown = ", ".join(sorted(str(p.relative_to(source)) for p in row_files))
+                fail(f"{row}: the text's {', '.join(absent)} "
+                     f"{'is' if len(absent) == 1 else 'are'} not in {shown or 'any file'}, "
+                     f"and the row names no code of ours for it")
+    if checked == 0:
+        fail("no text-to-code table names any code: the check found nothing to check")
+
+
 CHECKS = {
     "test-names": check_test_names,
     "flags": check_flags,
@@ -363,6 +507,7 @@ CHECKS = {
     "runnable": check_runnable,
     "environment": check_environment,
     "build-sh": check_build_sh,
+    "code-names": check_code_names,
 }
 
 

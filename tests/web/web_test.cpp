@@ -195,7 +195,7 @@ TEST(Web, KeysAndMouseMoveTheCamera) {
 }
 
 // The gallery links every web sample's page, each page is there, and each entry says what it
-// teaches (its README's first paragraph).
+// teaches (its README's summary: the first paragraph, with the formula or list it introduces).
 TEST(Web, GalleryLinksEveryPage) {
     PBR_NEED_WEB("01_lighting");
     std::ifstream in(fs::path(PBR_WEB_DIR) / "index.html");
