@@ -252,10 +252,14 @@ bool App::nextFrame() {
         if (input.dragDelta != glm::vec2(0.0f)) orbit_->orbit(input.dragDelta.x, input.dragDelta.y);
         if (input.scroll != 0.0f) orbit_->dolly(input.scroll);
     } else if (!config_.orbitCamera) {  // (an orbit sample before useOrbitCamera: no camera moves)
-        if (input.forward) camera_.processKeyboard(CameraMove::Forward, deltaTime_);
-        if (input.backward) camera_.processKeyboard(CameraMove::Backward, deltaTime_);
-        if (input.left) camera_.processKeyboard(CameraMove::Left, deltaTime_);
-        if (input.right) camera_.processKeyboard(CameraMove::Right, deltaTime_);
+        // A held key moves the camera by the frame's time, but by a quarter second's worth at
+        // most: a long frame (a shader reload, a busy machine, the browser's first frames) does
+        // not throw the camera far past what the learner was looking at.
+        const float step = std::min(deltaTime_, 0.25f);
+        if (input.forward) camera_.processKeyboard(CameraMove::Forward, step);
+        if (input.backward) camera_.processKeyboard(CameraMove::Backward, step);
+        if (input.left) camera_.processKeyboard(CameraMove::Left, step);
+        if (input.right) camera_.processKeyboard(CameraMove::Right, step);
         if (input.mouseDelta != glm::vec2(0.0f)) {
             camera_.processMouseMovement(input.mouseDelta.x, input.mouseDelta.y);
         }

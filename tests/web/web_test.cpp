@@ -157,8 +157,8 @@ TEST(Web, TheFrameLoopRunsInThePage) {
 
 // The keys and the mouse of the native window work in the page: W held walks towards the grid
 // (the spheres cover more of the picture), the mouse moving right turns the view right (the
-// grid moves left). The page runs in real time, so how far is the frames' business; the
-// directions are the test's.
+// grid moves left). The page runs in real time, so how far is the frames' business (a quarter
+// second's walk a frame at most, however slow the machine: App); the directions are the test's.
 TEST(Web, KeysAndMouseMoveTheCamera) {
     PBR_NEED_WEB("01_lighting");
     struct Picture {
