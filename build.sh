@@ -183,8 +183,10 @@ copy_to_long_checkout() {
     # files keep their times, so that its build is incremental)
     find "$copy" -mindepth 1 -maxdepth 1 ! -name build -exec rm -rf {} +
     tar -C "$repo_dir" --exclude=./build --exclude=./.git -cf - . | tar -C "$copy" -xf -
-    # the assets the Release build baked, where the asan preset looks for them
+    # the assets the Release build baked, where the asan preset looks for them, and the glTF
+    # validator the resources tests run
     ln -sfn "$repo_dir/build/release/resources" "$copy/build/release/resources"
+    [ ! -d "$repo_dir/build/node-tools" ] || ln -sfn "$repo_dir/build/node-tools" "$copy/build/node-tools"
     echo "build.sh: the sanitizer build, from $copy" >&2
 }
 
