@@ -210,8 +210,9 @@ void App::addOutputFile(fs::path path, std::string bytes) {
     outputFiles_.emplace_back(std::move(path), std::move(bytes));
 }
 
-Shader& App::shader(const std::string& vertex, const std::string& fragment) {
-    return shaders_.emplace_back(vertex, fragment);
+Shader& App::shader(const std::string& vertex, const std::string& fragment,
+                    std::vector<std::string> defines) {
+    return shaders_.emplace_back(vertex, fragment, std::move(defines));
 }
 
 void App::bindRenderTarget() const {

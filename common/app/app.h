@@ -98,7 +98,8 @@ public:
 
     // A program from shaders/<vertex> and shaders/<fragment>, owned by the App so that R can
     // reload it. The reference stays valid for the App's life.
-    Shader& shader(const std::string& vertex, const std::string& fragment);
+    Shader& shader(const std::string& vertex, const std::string& fragment,
+                   std::vector<std::string> defines = {});
 
     // Rebinds the frame's render target (after drawing into a framebuffer of your own).
     void bindRenderTarget() const;

@@ -200,8 +200,15 @@ fs::path resolveShaderPath(const fs::path& path) {
     return path.is_absolute() ? path : shaderDir() / path;
 }
 
-GLuint compileStage(GLenum stage, const fs::path& path) {
-    const ShaderSource source = preprocessShader(path, shaderDir() / "include");
+GLuint compileStage(GLenum stage, const fs::path& path, const std::vector<std::string>& defines) {
+    ShaderSource source = preprocessShader(path, shaderDir() / "include");
+    if (!defines.empty()) {
+        // After the #version line, which must come first; then the file's own line 2 again.
+        std::string lines;
+        for (const std::string& name : defines) lines += "#define " + name + " 1\n";
+        const size_t afterVersion = source.text.find('\n') + 1;
+        source.text.insert(afterVersion, lines + lineDirective(0, 2));
+    }
     const std::string code = kWebGl ? toGlslEs(source.text, path) : source.text;
     const GLuint shader = glCreateShader(stage);
     const char* text = code.c_str();
@@ -229,11 +236,12 @@ GLuint compileStage(GLenum stage, const fs::path& path) {
     throw Error(first);
 }
 
-GlProgram linkProgram(const fs::path& vertexPath, const fs::path& fragmentPath) {
-    const GLuint vertex = compileStage(GL_VERTEX_SHADER, vertexPath);
+GlProgram linkProgram(const fs::path& vertexPath, const fs::path& fragmentPath,
+                      const std::vector<std::string>& defines) {
+    const GLuint vertex = compileStage(GL_VERTEX_SHADER, vertexPath, defines);
     GLuint fragment = 0;
     try {
-        fragment = compileStage(GL_FRAGMENT_SHADER, fragmentPath);
+        fragment = compileStage(GL_FRAGMENT_SHADER, fragmentPath, defines);
     } catch (...) {
         glDeleteShader(vertex);
         throw;
@@ -261,10 +269,11 @@ GlProgram linkProgram(const fs::path& vertexPath, const fs::path& fragmentPath) 
 
 }  // namespace
 
-Shader::Shader(fs::path vertexPath, fs::path fragmentPath)
+Shader::Shader(fs::path vertexPath, fs::path fragmentPath, std::vector<std::string> defines)
     : vertexPath_(resolveShaderPath(vertexPath)),
       fragmentPath_(resolveShaderPath(fragmentPath)),
-      program_(linkProgram(vertexPath_, fragmentPath_)) {}
+      defines_(std::move(defines)),
+      program_(linkProgram(vertexPath_, fragmentPath_, defines_)) {}
 
 std::string Shader::name() const {
     return displayPath(vertexPath_) + " + " + displayPath(fragmentPath_);
@@ -276,7 +285,7 @@ void Shader::use() const {
 
 bool Shader::reload() {
     try {
-        program_ = linkProgram(vertexPath_, fragmentPath_);
+        program_ = linkProgram(vertexPath_, fragmentPath_, defines_);
     } catch (const Error& e) {
         std::fprintf(stderr, "reload failed, keeping the old program: %s\n", e.what());
         return false;

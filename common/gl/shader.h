@@ -43,8 +43,11 @@ std::vector<std::string> mapShaderLog(const std::string& log,
 
 class Shader {
 public:
-    // Paths relative to shaderDir() (or absolute). Throws Error on any compile or link failure.
-    Shader(std::filesystem::path vertexPath, std::filesystem::path fragmentPath);
+    // Paths relative to shaderDir() (or absolute). `defines` are #defined (as 1) in both stages,
+    // ahead of the files' text (the term views' TERM_VIEWS). Throws Error on any compile or link
+    // failure.
+    Shader(std::filesystem::path vertexPath, std::filesystem::path fragmentPath,
+           std::vector<std::string> defines = {});
 
     void use() const;
     // Builds the program again from the files. On failure prints the error, keeps the old
@@ -71,6 +74,7 @@ private:
     void store(const std::string& name, const Value& value);
 
     std::filesystem::path vertexPath_, fragmentPath_;
+    std::vector<std::string> defines_;
     GlProgram program_;
     std::unordered_map<std::string, GLint> locations_;
     std::map<std::string, Value> values_;

@@ -36,20 +36,27 @@ glm::vec3 fresnelSchlick(float cosTheta, const glm::vec3& F0) {
     return F0 + (1.0f - F0) * std::pow(std::clamp(1.0f - cosTheta, 0.0f, 1.0f), 5.0f);
 }
 
+CookTorrance cookTorrance(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                          const glm::vec3& albedo, float metallic, float roughness) {
+    CookTorrance t;
+    const glm::vec3 F0 = glm::mix(glm::vec3(0.04f), albedo, metallic);
+    const glm::vec3 H = glm::normalize(V + L);
+    t.D = DistributionGGX(N, H, roughness);
+    t.G = GeometrySmith(N, V, L, roughness);
+    t.F = fresnelSchlick(std::max(glm::dot(H, V), 0.0f), F0);
+    const float NdotV = std::max(glm::dot(N, V), 0.0f);
+    t.NdotL = std::max(glm::dot(N, L), 0.0f);
+    // + 0.001 keeps the denominator off zero at grazing angles, as in the text.
+    t.specular = t.D * t.G * t.F / (4.0f * NdotV * t.NdotL + 0.001f);
+    t.kD = (glm::vec3(1.0f) - t.F) * (1.0f - metallic);
+    return t;
+}
+
 glm::vec3 directLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
                       const glm::vec3& radiance, const glm::vec3& albedo, float metallic,
                       float roughness) {
-    const glm::vec3 F0 = glm::mix(glm::vec3(0.04f), albedo, metallic);
-    const glm::vec3 H = glm::normalize(V + L);
-    const float NDF = DistributionGGX(N, H, roughness);
-    const float G = GeometrySmith(N, V, L, roughness);
-    const glm::vec3 F = fresnelSchlick(std::max(glm::dot(H, V), 0.0f), F0);
-    const float NdotV = std::max(glm::dot(N, V), 0.0f);
-    const float NdotL = std::max(glm::dot(N, L), 0.0f);
-    // + 0.001 keeps the denominator off zero at grazing angles, as in the text.
-    const glm::vec3 specular = NDF * G * F / (4.0f * NdotV * NdotL + 0.001f);
-    const glm::vec3 kD = (glm::vec3(1.0f) - F) * (1.0f - metallic);
-    return (kD * albedo / PI + specular) * radiance * NdotL;
+    const CookTorrance t = cookTorrance(N, V, L, albedo, metallic, roughness);
+    return (t.kD * albedo / PI + t.specular) * radiance * t.NdotL;
 }
 
 glm::vec3 shadePointLights(const SurfacePoint& s, const glm::vec3& cameraPosition,

@@ -34,6 +34,19 @@ struct SurfacePoint {
 glm::vec3 shadePointLights(const SurfacePoint& surface, const glm::vec3& cameraPosition,
                            std::span<const PointLight> lights);
 
+// The terms of the BRDF for one light direction L (cookTorrance of brdf.glsl): D, G, F, the
+// specular term D G F / (4 NdotV NdotL + 0.001), kD = (1 - F)(1 - metallic), NdotL.
+struct CookTorrance {
+    float D = 0.0f;
+    float G = 0.0f;
+    glm::vec3 F{0.0f};
+    glm::vec3 specular{0.0f};
+    glm::vec3 kD{0.0f};
+    float NdotL = 0.0f;
+};
+CookTorrance cookTorrance(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                          const glm::vec3& albedo, float metallic, float roughness);
+
 // One light's share: (kD albedo / pi + specular) radiance NdotL, the text's integrand for one
 // direction (directLight of brdf.glsl).
 glm::vec3 directLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,

@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/app.h"
+#include "app/views.h"
 #include "base/error.h"
 #include "gl/mesh.h"
 #include "math/sphere_grid.h"
@@ -21,17 +22,21 @@ int main(int argc, char** argv) try {
                        "--lights", "N", "use the first N of the 4 point lights (default 4)", 0, 4),
                    pbr::FlagSpec::number("--roughness-offset", "D",
                                          "add D (-1 to 1) to every sphere's roughness (default 0)",
-                                         -1.0, 1.0)}});
+                                         -1.0, 1.0),
+                   pbr::viewFlag(pbr::kDirectLightViews)}});
     const int lightCount = app.flagInt("--lights", 4);
     const float roughnessOffset = app.flagNumber("--roughness-offset", 0.0f);
 
-    pbr::Shader& shader = app.shader("common/pbr.vert", "01_lighting/pbr.frag");
+    const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+    pbr::Shader& shader =
+        app.shader("common/pbr.vert", "01_lighting/pbr.frag", pbr::viewDefines(view));
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
 
     // Constant material and the lights, set before the first frame is drawn (the text's first
     // frame has no light uniforms yet).
     shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
     shader.set("ao", 1.0f);
+    pbr::selectView(shader, view);
     const auto lightPositions = std::span(pbr::kGridLightPositions).first(size_t(lightCount));
     pbr::setPointLights(shader, lightPositions, glm::vec3(300.0f, 300.0f, 300.0f));
 

@@ -21,6 +21,7 @@ uniform vec3 camPos;
 
 #include "brdf.glsl"
 #include "tonemap.glsl"
+#include "views.glsl"
 
 void main()
 {
@@ -44,5 +45,13 @@ void main()
 
     // HDR -> LDR, then linear -> gamma
     color = gammaCorrect(reinhard(color));
+#ifdef TERM_VIEWS  // --view: one input or term of the equation instead (views.glsl)
+    DirectSums sums = noDirectSums();
+    for (int i = 0; i < lightCount; ++i)
+        addDirectTerms(sums, N, V, normalize(lightPositions[i] - WorldPos), albedo, metallic,
+                       roughness);
+    color = directView(termView, albedo, N, metallic, roughness, ao, sums,
+                       gammaCorrect(reinhard(Lo)));
+#endif
     FragColor = vec4(color, 1.0);
 }

@@ -43,24 +43,44 @@ vec3 fresnelSchlickRoughness(float cosTheta, vec3 F0, float roughness)
     return F0 + (max(vec3(1.0 - roughness), F0) - F0) * pow(clamp(1.0 - cosTheta, 0.0, 1.0), 5.0);
 }
 
+// The terms of the Cook-Torrance BRDF for one light direction L, as the text names them: the
+// normal distribution D, the geometry term G, the Fresnel term F, the specular term
+// D G F / (4 NdotV NdotL), the diffuse share kD = (1 - F)(1 - metallic), and NdotL.
+struct CookTorrance
+{
+    float D;
+    float G;
+    vec3 F;
+    vec3 specular;
+    vec3 kD;
+    float NdotL;
+};
+
+CookTorrance cookTorrance(vec3 N, vec3 V, vec3 L, vec3 albedo, float metallic, float roughness)
+{
+    CookTorrance t;
+    vec3 H = normalize(V + L);
+    vec3 F0 = mix(vec3(0.04), albedo, metallic);  // dielectrics reflect about 4% head-on
+
+    t.D = DistributionGGX(N, H, roughness);
+    t.G = GeometrySmith(N, V, L, roughness);
+    t.F = fresnelSchlick(max(dot(H, V), 0.0), F0);
+
+    float NdotV = max(dot(N, V), 0.0);
+    t.NdotL = max(dot(N, L), 0.0);
+    t.specular = t.D * t.G * t.F / (4.0 * NdotV * t.NdotL + 0.001);  // + 0.001: no division by 0
+
+    vec3 kS = t.F;                                  // the reflected share is the Fresnel term...
+    t.kD = (vec3(1.0) - kS) * (1.0 - metallic);    // ...the rest refracts; metals have none
+    return t;
+}
+
 // Outgoing radiance from one light arriving along L with `radiance`: the reflectance equation's
 // integrand for a single direction, (kD * albedo / PI + specular) * radiance * NdotL.
 vec3 directLight(vec3 N, vec3 V, vec3 L, vec3 radiance, vec3 albedo, float metallic, float roughness)
 {
-    vec3 H = normalize(V + L);
-    vec3 F0 = mix(vec3(0.04), albedo, metallic);  // dielectrics reflect about 4% head-on
-
-    float NDF = DistributionGGX(N, H, roughness);
-    float G = GeometrySmith(N, V, L, roughness);
-    vec3 F = fresnelSchlick(max(dot(H, V), 0.0), F0);
-
-    float NdotV = max(dot(N, V), 0.0);
-    float NdotL = max(dot(N, L), 0.0);
-    vec3 specular = NDF * G * F / (4.0 * NdotV * NdotL + 0.001);  // + 0.001: no division by zero
-
-    vec3 kS = F;                                // the reflected share is the Fresnel term...
-    vec3 kD = (vec3(1.0) - kS) * (1.0 - metallic);  // ...the rest refracts; metals have none
-    return (kD * albedo / PI + specular) * radiance * NdotL;
+    CookTorrance t = cookTorrance(N, V, L, albedo, metallic, roughness);
+    return (t.kD * albedo / PI + t.specular) * radiance * t.NdotL;
 }
 
 // ---- glTF 2.0, Appendix B (the material the glTF samples 07 and 08 draw) ----

@@ -57,6 +57,13 @@ std::vector<GoldenCase> goldenCases() {
          {},
          true},
     };
+    // 01's term views that teach most (01's README, "Term views"), at a small size.
+    for (const char* view : {"d", "g", "f", "diffuse", "normal"}) {
+        cases.push_back({std::string("01_view_") + view,
+                         "01_lighting",
+                         {"--view", view, "--size", "480x270"},
+                         0.1});
+    }
     // 09: the whole scene, and each kind of light alone.
     cases.push_back({"09_light_types", "09_light_types", {}, 0.1});
     for (const char* only : {"point", "directional", "spot", "ambient-box", "ambient-sphere"}) {

@@ -1,0 +1,62 @@
+#include "app/views.h"
+
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
+#include "base/error.h"
+
+namespace pbr {
+
+namespace {
+struct Named {
+    View view;
+    std::string_view name;
+};
+constexpr Named kNames[] = {
+    {View::Final, "final"},       {View::Albedo, "albedo"},     {View::Normal, "normal"},
+    {View::Metallic, "metallic"}, {View::Roughness, "roughness"}, {View::Ao, "ao"},
+    {View::F0, "f0"},             {View::D, "d"},               {View::G, "g"},
+    {View::F, "f"},               {View::Specular, "specular"}, {View::Diffuse, "diffuse"},
+    {View::NdotL, "ndotl"},       {View::Direct, "direct"},
+};
+}  // namespace
+
+std::string_view viewName(View view) {
+    for (const Named& named : kNames) {
+        if (named.view == view) return named.name;
+    }
+    throw Error("view " + std::to_string(int(view)) + " has no name");
+}
+
+std::string viewConstant(View view) {
+    std::string constant = "VIEW_";
+    for (char c : viewName(view)) constant += char(std::toupper(static_cast<unsigned char>(c)));
+    return constant;
+}
+
+FlagSpec viewFlag(std::span<const View> views) {
+    std::vector<std::string> names;
+    for (View view : views) names.emplace_back(viewName(view));
+    return FlagSpec::choice("--view", std::move(names),
+                            "show one input or term of the equation instead of the picture "
+                            "(default final: the picture; see README.md, \"Term views\")");
+}
+
+View viewNamed(std::string_view name) {
+    for (const Named& named : kNames) {
+        if (named.name == name) return named.view;
+    }
+    throw Error("no view is named '" + std::string(name) + "'");
+}
+
+std::vector<std::string> viewDefines(View view) {
+    if (view == View::Final) return {};
+    return {"TERM_VIEWS"};
+}
+
+void selectView(Shader& shader, View view) {
+    if (view != View::Final) shader.set("termView", int(view));
+}
+
+}  // namespace pbr

@@ -1,0 +1,62 @@
+#pragma once
+// The term views (--view NAME): instead of its picture a sample shows one input or one term of
+// the lesson's equation, so that a learner sees D, G, F, ... one at a time. The view code is
+// written once, in shaders/include/views.glsl, and compiled in only when a view is asked for (the
+// shaders are built with TERM_VIEWS defined): the picture's program is the lesson's own, to the
+// instruction, and costs what it always did. Which view is the `termView` uniform: the numbers
+// below, which views.glsl holds as VIEW_D = 7, ... (a unit test holds the two together). Each
+// view's formula and encoding is defined in the README of every sample that has it.
+//
+//     const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+//     pbr::Shader& shader = app.shader("common/pbr.vert", "01_lighting/pbr.frag",
+//                                      pbr::viewDefines(view));
+//     pbr::selectView(shader, view);
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/options.h"
+#include "gl/shader.h"
+
+namespace pbr {
+
+enum class View {
+    Final = 0,  // the picture, as without --view
+    // the inputs
+    Albedo = 1,
+    Normal = 2,
+    Metallic = 3,
+    Roughness = 4,
+    Ao = 5,
+    F0 = 6,
+    // the direct light's terms
+    D = 7,
+    G = 8,
+    F = 9,
+    Specular = 10,
+    Diffuse = 11,
+    NdotL = 12,
+    Direct = 13,
+};
+
+// Every view the direct-light samples have, in the order --help lists them.
+inline constexpr View kDirectLightViews[] = {
+    View::Final, View::Albedo, View::Normal,   View::Metallic, View::Roughness,
+    View::Ao,    View::F0,     View::D,        View::G,        View::F,
+    View::Specular, View::Diffuse, View::NdotL, View::Direct};
+
+// "final", "albedo", "normal", ..., "d", "g", "f", "specular", "diffuse", "ndotl", "direct".
+std::string_view viewName(View view);
+// The shaders' VIEW_ constant of a view: "VIEW_NDOTL".
+std::string viewConstant(View view);
+// --view NAME, a choice of `views` (the first is the default).
+FlagSpec viewFlag(std::span<const View> views);
+// The view a --view word names (one viewFlag accepted).
+View viewNamed(std::string_view name);
+// What the sample's shaders are built with: nothing for the picture, TERM_VIEWS for a view.
+std::vector<std::string> viewDefines(View view);
+// Sets `termView` for a view (nothing for the picture, whose program has no such uniform).
+void selectView(Shader& shader, View view);
+
+}  // namespace pbr
