@@ -4,9 +4,7 @@
 
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
-#include <sstream>
 #include <string>
 
 #include "app/views.h"
@@ -15,16 +13,20 @@
 namespace pbr {
 namespace {
 
+// Every "const int VIEW_<NAME> = <number>;" line of views.glsl (no <regex>: its GCC 12 headers
+// warn under the sanitizers).
 std::map<std::string, int> glslViewConstants() {
     std::ifstream file(shaderDir() / "include" / "views.glsl");
-    std::stringstream text;
-    text << file.rdbuf();
-    const std::string source = text.str();
     std::map<std::string, int> constants;
-    const std::regex constant(R"(const int (VIEW_[A-Z0-9_]+) = (\d+);)");
-    for (auto it = std::sregex_iterator(source.begin(), source.end(), constant);
-         it != std::sregex_iterator(); ++it) {
-        constants[(*it)[1]] = std::stoi((*it)[2]);
+    std::string line;
+    const std::string prefix = "const int VIEW_";
+    while (std::getline(file, line)) {
+        if (line.rfind(prefix, 0) != 0) continue;
+        const size_t equals = line.find(" = ");
+        const size_t end = line.find(';');
+        if (equals == std::string::npos || end == std::string::npos) continue;
+        constants[line.substr(10, equals - 10)] =
+            std::stoi(line.substr(equals + 3, end - equals - 3));
     }
     return constants;
 }
