@@ -18,7 +18,10 @@ constexpr Named kNames[] = {
     {View::Metallic, "metallic"}, {View::Roughness, "roughness"}, {View::Ao, "ao"},
     {View::F0, "f0"},             {View::D, "d"},               {View::G, "g"},
     {View::F, "f"},               {View::Specular, "specular"}, {View::Diffuse, "diffuse"},
-    {View::NdotL, "ndotl"},       {View::Direct, "direct"},
+    {View::NdotL, "ndotl"},       {View::Direct, "direct"},     {View::Irradiance, "irradiance"},
+    {View::Prefiltered, "prefiltered"}, {View::Lut, "lut"},
+    {View::AmbientDiffuse, "ambient-diffuse"}, {View::AmbientSpecular, "ambient-specular"},
+    {View::Ambient, "ambient"},
 };
 }  // namespace
 
@@ -31,7 +34,8 @@ std::string_view viewName(View view) {
 
 std::string viewConstant(View view) {
     std::string constant = "VIEW_";
-    for (char c : viewName(view)) constant += char(std::toupper(static_cast<unsigned char>(c)));
+    for (char c : viewName(view))
+        constant += c == '-' ? '_' : char(std::toupper(static_cast<unsigned char>(c)));
     return constant;
 }
 

@@ -38,6 +38,13 @@ enum class View {
     Diffuse = 11,
     NdotL = 12,
     Direct = 13,
+    // the image-based light's reads and terms
+    Irradiance = 14,
+    Prefiltered = 15,
+    Lut = 16,
+    AmbientDiffuse = 17,
+    AmbientSpecular = 18,
+    Ambient = 19,
 };
 
 // Every view the direct-light samples have, in the order --help lists them.
@@ -45,10 +52,29 @@ inline constexpr View kDirectLightViews[] = {
     View::Final, View::Albedo, View::Normal,   View::Metallic, View::Roughness,
     View::Ao,    View::F0,     View::D,        View::G,        View::F,
     View::Specular, View::Diffuse, View::NdotL, View::Direct};
+// 09's: those, and its ambient volumes' light alone (--only picks the light types).
+inline constexpr View kLightTypeViews[] = {
+    View::Final, View::Albedo,   View::Normal,  View::Metallic, View::Roughness,
+    View::Ao,    View::F0,       View::D,       View::G,        View::F,
+    View::Specular, View::Diffuse, View::NdotL, View::Direct,   View::Ambient};
+// 04's: the direct-light views and its image-based light, the irradiance alone.
+inline constexpr View kIrradianceViews[] = {
+    View::Final,      View::Albedo,  View::Normal,     View::Metallic,       View::Roughness,
+    View::Ao,         View::F0,      View::D,          View::G,              View::F,
+    View::Specular,   View::Diffuse, View::NdotL,      View::Direct,         View::Irradiance,
+    View::AmbientDiffuse, View::Ambient};
+// 05's: the direct-light views and every read and term of the split sum.
+inline constexpr View kSplitSumViews[] = {
+    View::Final,      View::Albedo,      View::Normal,         View::Metallic,
+    View::Roughness,  View::Ao,          View::F0,             View::D,
+    View::G,          View::F,           View::Specular,       View::Diffuse,
+    View::NdotL,      View::Direct,      View::Irradiance,     View::Prefiltered,
+    View::Lut,        View::AmbientDiffuse, View::AmbientSpecular, View::Ambient};
 
-// "final", "albedo", "normal", ..., "d", "g", "f", "specular", "diffuse", "ndotl", "direct".
+// "final", "albedo", "normal", ..., "d", "g", "f", "specular", "diffuse", "ndotl", "direct",
+// "irradiance", "prefiltered", "lut", "ambient-diffuse", "ambient-specular", "ambient".
 std::string_view viewName(View view);
-// The shaders' VIEW_ constant of a view: "VIEW_NDOTL".
+// The shaders' VIEW_ constant of a view: "VIEW_NDOTL", "VIEW_AMBIENT_DIFFUSE".
 std::string viewConstant(View view);
 // --view NAME, a choice of `views` (the first is the default).
 FlagSpec viewFlag(std::span<const View> views);

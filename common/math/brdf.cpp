@@ -36,6 +36,30 @@ glm::vec3 fresnelSchlick(float cosTheta, const glm::vec3& F0) {
     return F0 + (1.0f - F0) * std::pow(std::clamp(1.0f - cosTheta, 0.0f, 1.0f), 5.0f);
 }
 
+glm::vec3 fresnelSchlickRoughness(float cosTheta, const glm::vec3& F0, float roughness) {
+    const glm::vec3 grazing = glm::max(glm::vec3(1.0f - roughness), F0);  // the rim's reflectance
+    return F0 + (grazing - F0) * std::pow(std::clamp(1.0f - cosTheta, 0.0f, 1.0f), 5.0f);
+}
+
+SplitSumAmbient splitSumAmbient(float NdotV, const glm::vec3& albedo, float metallic,
+                                float roughness, const glm::vec3& irradiance,
+                                const glm::vec3& prefiltered, const glm::vec2& scaleBias,
+                                bool exact) {
+    const glm::vec3 F0 = glm::mix(glm::vec3(0.04f), albedo, metallic);
+    const float scale = scaleBias.x, bias = scaleBias.y;
+    SplitSumAmbient ambient;
+    if (exact) {
+        const float dielectricAlbedo = 0.04f * scale + bias;  // what a dielectric's lobe reflects
+        ambient.diffuse = (1.0f - metallic) * (1.0f - dielectricAlbedo) * albedo * irradiance;
+        ambient.specular = (F0 * scale + bias) * prefiltered;
+    } else {
+        const glm::vec3 F = fresnelSchlickRoughness(NdotV, F0, roughness);
+        ambient.diffuse = (1.0f - F) * (1.0f - metallic) * albedo * irradiance;
+        ambient.specular = (F * scale + bias) * prefiltered;
+    }
+    return ambient;
+}
+
 CookTorrance cookTorrance(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
                           const glm::vec3& albedo, float metallic, float roughness) {
     CookTorrance t;
@@ -94,32 +118,43 @@ bool insideAmbientVolume(const PackedLight& light, const glm::vec3& p) {
     return false;
 }
 
+glm::vec3 lightTypeRadiance(const PackedLight& light, const glm::vec3& position, glm::vec3& L) {
+    const glm::vec3 color = light.color() * light.intensity();
+    L = glm::vec3(0.0f, 1.0f, 0.0f);
+    switch (light.type()) {
+        case LightType::AmbientBox:
+        case LightType::AmbientSphere:
+            return insideAmbientVolume(light, position) ? color : glm::vec3(0.0f);
+        case LightType::Directional:
+            L = glm::normalize(-light.forward());
+            return color;
+        case LightType::Point:
+        case LightType::Spot: {
+            const glm::vec3 toLight = light.position() - position;
+            L = glm::normalize(toLight);
+            float coefficient = lightAttenuation(light, glm::length(toLight));
+            if (light.type() == LightType::Spot) coefficient *= spotCone(light, L);
+            return color * coefficient;
+        }
+    }
+    return glm::vec3(0.0f);
+}
+
+bool isAmbientVolume(const PackedLight& light) {
+    return light.type() == LightType::AmbientBox || light.type() == LightType::AmbientSphere;
+}
+
 glm::vec3 shadeLightTypes(const SurfacePoint& s, const glm::vec3& cameraPosition,
                           std::span<const PackedLight> lights) {
     const glm::vec3 V = glm::normalize(cameraPosition - s.position);
     glm::vec3 Lo(0.0f), ambient(0.0f);
     for (const PackedLight& light : lights) {
-        const glm::vec3 color = light.color() * light.intensity();
-        switch (light.type()) {
-            case LightType::AmbientBox:
-            case LightType::AmbientSphere:
-                if (insideAmbientVolume(light, s.position)) ambient += color;
-                break;
-            case LightType::Directional:
-                Lo += directLight(s.normal, V, glm::normalize(-light.forward()), color, s.albedo,
-                                  s.metallic, s.roughness);
-                break;
-            case LightType::Point:
-            case LightType::Spot: {
-                const glm::vec3 toLight = light.position() - s.position;
-                const glm::vec3 L = glm::normalize(toLight);
-                float coefficient = lightAttenuation(light, glm::length(toLight));
-                if (light.type() == LightType::Spot) coefficient *= spotCone(light, L);
-                Lo += directLight(s.normal, V, L, color * coefficient, s.albedo, s.metallic,
-                                  s.roughness);
-                break;
-            }
-        }
+        glm::vec3 L;
+        const glm::vec3 radiance = lightTypeRadiance(light, s.position, L);
+        if (isAmbientVolume(light))
+            ambient += radiance;
+        else
+            Lo += directLight(s.normal, V, L, radiance, s.albedo, s.metallic, s.roughness);
     }
     return ambient * s.albedo * s.ao + Lo;
 }

@@ -14,6 +14,9 @@ float DistributionGGX(const glm::vec3& N, const glm::vec3& H, float roughness);
 float GeometrySchlickGGX(float NdotV, float roughness);
 float GeometrySmith(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L, float roughness);
 glm::vec3 fresnelSchlick(float cosTheta, const glm::vec3& F0);
+// Fresnel of the view angle with the roughness folded in (Lagarde's form, LearnOpenGL PBR / IBL /
+// Diffuse irradiance): F0 + (max(1 - roughness, F0) - F0) (1 - cosTheta)^5.
+glm::vec3 fresnelSchlickRoughness(float cosTheta, const glm::vec3& F0, float roughness);
 
 struct PointLight {
     glm::vec3 position;
@@ -58,11 +61,32 @@ glm::vec3 directLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L
 // point (no constant ambient). Linear, before tone mapping.
 glm::vec3 shadeLightTypes(const SurfacePoint& surface, const glm::vec3& cameraPosition,
                           std::span<const PackedLight> lights);
+// What one light brings to `position`: a direct light's radiance there (attenuation and cone
+// included) from the unit direction it sets in L; an ambient volume's colour where the volume
+// holds the point, else 0 (L is then +Y, unused).
+glm::vec3 lightTypeRadiance(const PackedLight& light, const glm::vec3& position, glm::vec3& L);
+bool isAmbientVolume(const PackedLight& light);
 // The parts, for tests: 1 / (c + l d + q d^2); the spot's cone factor for the unit direction
 // from the point towards the light; whether a point lies in an ambient volume.
 float lightAttenuation(const PackedLight& light, float distance);
 float spotCone(const PackedLight& light, const glm::vec3& toLight);
 bool insideAmbientVolume(const PackedLight& light, const glm::vec3& point);
+
+// The ambient light of the split-sum IBL at one point, from its three reads there: the
+// irradiance map's value at N, the prefiltered radiance along R and the LUT's (scale, bias) at
+// (NdotV, roughness). Its two parts before occlusion, in one of two forms (ibl_ambient.glsl):
+//   the text's:  diffuse = (1 - F)(1 - metallic) irradiance albedo, F = fresnelSchlickRoughness,
+//                specular = prefiltered (F scale + bias);
+//   the exact:   diffuse = (1 - metallic) albedo irradiance (1 - (0.04 scale + bias)), what the
+//                dielectric's specular lobe leaves; specular = prefiltered (F0 scale + bias).
+struct SplitSumAmbient {
+    glm::vec3 diffuse{0.0f};
+    glm::vec3 specular{0.0f};
+};
+SplitSumAmbient splitSumAmbient(float NdotV, const glm::vec3& albedo, float metallic,
+                                float roughness, const glm::vec3& irradiance,
+                                const glm::vec3& prefiltered, const glm::vec2& scaleBias,
+                                bool exact);
 
 // Reference values of the BRDF LUT by deterministic numerical quadrature, not sampling: the
 // integrand is summed over half vectors h with Gauss-Legendre rules on panels of theta_h graded

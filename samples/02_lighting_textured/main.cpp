@@ -2,6 +2,7 @@
 // sphere in the same material from five maps (rusted iron, made by the project), one light.
 // See README.md beside this file.
 #include "app/app.h"
+#include "app/views.h"
 #include "base/error.h"
 #include "base/paths.h"
 #include "gl/mesh.h"
@@ -22,11 +23,14 @@ int main(int argc, char** argv) try {
                        "--tangent-frame", {"mesh", "derivatives"},
                        "tangents from the sphere (default) or from screen-space derivatives"),
                    pbr::FlagSpec::choice("--filter", {"trilinear", "nearest"},
-                                         "texture filtering (default trilinear)")}});
+                                         "texture filtering (default trilinear)"),
+                   pbr::viewFlag(pbr::kDirectLightViews)}});
     const std::string frame = app.flagChoice("--tangent-frame");
     const std::string filter = app.flagChoice("--filter");
 
-    pbr::Shader& shader = app.shader("common/pbr_tangent.vert", "02_lighting_textured/pbr.frag");
+    const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+    pbr::Shader& shader = app.shader("common/pbr_tangent.vert", "02_lighting_textured/pbr.frag",
+                                     pbr::viewDefines(view));
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
     const pbr::PbrTextures material = pbr::loadPbrTextures(
         app.flag("--material-dir").value_or((pbr::materialDir() / "rusted_iron").string()),
@@ -38,6 +42,7 @@ int main(int argc, char** argv) try {
     shader.set("roughnessMap", 3);
     shader.set("aoMap", 4);
     shader.set("useDerivativeTangents", frame == "derivatives" ? 1 : 0);
+    pbr::selectView(shader, view);
 
     // One light in front of the grid, set before the first frame.
     const glm::vec3 lightPosition(0.0f, 0.0f, 10.0f);
@@ -57,10 +62,10 @@ int main(int argc, char** argv) try {
         shader.set("camPos", app.camera().position());
         material.bind();
 
-        const pbr::Frustum view = app.frustum();  // a sphere wholly out of view draws nothing
+        const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing
         for (int row = 0; row < grid.nrRows; ++row) {
             for (int col = 0; col < grid.nrColumns; ++col) {
-                if (!view.mayContain(grid.position(row, col), 1.0f)) continue;
+                if (!frustum.mayContain(grid.position(row, col), 1.0f)) continue;
                 shader.setModel(grid.model(row, col));
                 sphere.draw();
             }

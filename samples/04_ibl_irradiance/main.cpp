@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "app/app.h"
+#include "app/views.h"
 #include "base/error.h"
 #include "gl/mesh.h"
 #include "ibl/ibl.h"
@@ -12,11 +13,17 @@
 #include "math/sphere_grid.h"
 
 int main(int argc, char** argv) try {
+    std::vector<pbr::FlagSpec> flags = pbr::iblFlags();
+    flags.push_back(pbr::FlagSpec::integer(
+        "--lights", "N", "use the first N of the 4 point lights (default 4)", 0, 4));
+    flags.push_back(pbr::FlagSpec::toggle("--no-ibl", "leave out the image-based light"));
+    flags.push_back(pbr::viewFlag(pbr::kIrradianceViews));
     pbr::App app(argc, argv,
                  {.name = "04_ibl_irradiance",
                   .title = "04 IBL: diffuse irradiance",
                   .cameraPosition = {0.0f, 0.0f, 21.0f},  // 23 from the grid at z = -2
-                  .flags = pbr::iblFlags()});
+                  .flags = flags});
+    const int lightCount = app.flagInt("--lights", 4);
 
     // Precompute (or load from the cache): the environment cube (512^2, mipmapped) and its
     // irradiance (32^2).
@@ -26,14 +33,19 @@ int main(int argc, char** argv) try {
     const pbr::TextureCube irradianceMap = environment.irradianceMap(32);
     app.addPrecomputeSeconds(cache.computeSeconds());
 
-    pbr::Shader& shader = app.shader("common/pbr.vert", "04_ibl_irradiance/pbr.frag");
+    const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+    pbr::Shader& shader =
+        app.shader("common/pbr.vert", "04_ibl_irradiance/pbr.frag", pbr::viewDefines(view));
     pbr::Skybox skybox;
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
 
     shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
     shader.set("ao", 1.0f);
     shader.set("irradianceMap", 0);
-    pbr::setPointLights(shader, pbr::kGridLightPositions, glm::vec3(300.0f));
+    shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
+    pbr::selectView(shader, view);
+    pbr::setPointLights(shader, std::span(pbr::kGridLightPositions).first(size_t(lightCount)),
+                        glm::vec3(300.0f));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
 
     glEnable(GL_DEPTH_TEST);
@@ -47,11 +59,11 @@ int main(int argc, char** argv) try {
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
         irradianceMap.bind(0);
-        const pbr::Frustum view = app.frustum();  // a sphere wholly out of view draws nothing
+        const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing
         for (int row = 0; row < grid.nrRows; ++row) {
             shader.set("metallic", float(row) / float(grid.nrRows));
             for (int col = 0; col < grid.nrColumns; ++col) {
-                if (!view.mayContain(grid.position(row, col), 1.0f)) continue;
+                if (!frustum.mayContain(grid.position(row, col), 1.0f)) continue;
                 shader.set("roughness",
                            std::clamp(float(col) / float(grid.nrColumns), 0.05f, 1.0f));
                 shader.setModel(grid.model(row, col));

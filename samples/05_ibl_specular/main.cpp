@@ -6,6 +6,7 @@
 #include <array>
 
 #include "app/app.h"
+#include "app/views.h"
 #include "base/error.h"
 #include "base/paths.h"
 #include "gl/mesh.h"
@@ -28,12 +29,17 @@ int main(int argc, char** argv) try {
         "--split-sum", {"text", "exact"},
         "the ambient term: the text's (F times the LUT's scale; default) or the split sum as its "
         "derivation has it (F0 times the scale, diffuse weighted by what the lobe leaves)"));
+    flags.push_back(pbr::FlagSpec::integer(
+        "--lights", "N", "use the first N of the 4 point lights (default 4)", 0, 4));
+    flags.push_back(pbr::FlagSpec::toggle("--no-ibl", "leave out the image-based light"));
+    flags.push_back(pbr::viewFlag(pbr::kSplitSumViews));
     pbr::App app(argc, argv,
                  {.name = "05_ibl_specular",
                   .title = "05 IBL: specular",
                   .cameraPosition = {0.0f, 0.0f, 21.0f},  // 23 from the grid at z = -2
                   .flags = flags});
     const bool textured = app.options().has("--textured");
+    const int lightCount = app.flagInt("--lights", 4);
     if (textured) app.setDefaultCamera({0.0f, 0.0f, 8.0f});  // the row of five, 10 away
 
     // Precompute (or load from the cache): environment 512^2, irradiance 32^2, prefiltered
@@ -48,9 +54,12 @@ int main(int argc, char** argv) try {
     const pbr::Texture2D brdfLUT = pbr::brdfLut(cache, 512, 1024, pbr::BrdfLutChannels::ScaleBias);
     app.addPrecomputeSeconds(cache.computeSeconds());
 
-    pbr::Shader& shader =
-        textured ? app.shader("common/pbr_tangent.vert", "05_ibl_specular/pbr_textured.frag")
-                 : app.shader("common/pbr.vert", "05_ibl_specular/pbr.frag");
+    const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+    pbr::Shader& shader = textured ? app.shader("common/pbr_tangent.vert",
+                                                "05_ibl_specular/pbr_textured.frag",
+                                                pbr::viewDefines(view))
+                                   : app.shader("common/pbr.vert", "05_ibl_specular/pbr.frag",
+                                                pbr::viewDefines(view));
     pbr::Skybox skybox;
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
     std::vector<pbr::PbrTextures> materials;
@@ -70,7 +79,10 @@ int main(int argc, char** argv) try {
     // Units 5-7 hold the split-sum maps for the whole run: nothing else binds them.
     pbr::useIblMaps(shader, environmentMap, irradianceMap, prefilterMap, brdfLUT, 5);
     shader.set("exactSplitSum", app.flagChoice("--split-sum") == "exact" ? 1 : 0);
-    pbr::setPointLights(shader, pbr::kGridLightPositions, glm::vec3(300.0f));
+    shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
+    pbr::selectView(shader, view);
+    pbr::setPointLights(shader, std::span(pbr::kGridLightPositions).first(size_t(lightCount)),
+                        glm::vec3(300.0f));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
     const pbr::SphereGrid row{.nrRows = 1, .nrColumns = 5, .spacing = 2.5f, .z = -2.0f};
 
@@ -84,10 +96,10 @@ int main(int argc, char** argv) try {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
-        const pbr::Frustum view = app.frustum();  // a sphere wholly out of view draws nothing
+        const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing
         if (textured) {
             for (int col = 0; col < row.nrColumns; ++col) {
-                if (!view.mayContain(row.position(0, col), 1.0f)) continue;
+                if (!frustum.mayContain(row.position(0, col), 1.0f)) continue;
                 materials[size_t(col)].bind();
                 shader.setModel(row.model(0, col));
                 sphere.draw();
@@ -96,7 +108,7 @@ int main(int argc, char** argv) try {
             for (int r = 0; r < grid.nrRows; ++r) {
                 shader.set("metallic", float(r) / float(grid.nrRows));
                 for (int col = 0; col < grid.nrColumns; ++col) {
-                    if (!view.mayContain(grid.position(r, col), 1.0f)) continue;
+                    if (!frustum.mayContain(grid.position(r, col), 1.0f)) continue;
                     shader.set("roughness",
                                std::clamp(float(col) / float(grid.nrColumns), 0.05f, 1.0f));
                     shader.setModel(grid.model(r, col));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/app.h"
+#include "app/views.h"
 #include "base/error.h"
 #include "base/paths.h"
 #include "gl/light_buffer.h"
@@ -40,8 +41,9 @@ int main(int argc, char** argv) try {
                                     3, 0.0, 1e6),
              pbr::FlagSpec::toggle("--untextured",
                                    "a plain material instead of the maps: the tint as albedo, "
-                                   "metallic 0, roughness = the roughness factor (the tests' "
-                                   "surface)")}});
+                                   "a rough dielectric floor, spheres of roughness 0.4 and "
+                                   "metallic 0 to 1 from left to right (the tests' surface)"),
+             pbr::viewFlag(pbr::kLightTypeViews)}});
     const std::string only = app.flagChoice("--only");
     const int extraLights = app.flagInt("--point-lights", 0);
     pbr::Attenuation attenuation = light_types::kPointAttenuation;
@@ -54,7 +56,9 @@ int main(int argc, char** argv) try {
     }
     const bool untextured = app.options().has("--untextured");
 
-    pbr::Shader& shader = app.shader("common/pbr_tangent.vert", "09_light_types/light_types.frag");
+    const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+    pbr::Shader& shader = app.shader("common/pbr_tangent.vert", "09_light_types/light_types.frag",
+                                     pbr::viewDefines(view));
     pbr::LightBuffer::attach(shader.id());
     shader.set("albedoMap", 0);
     shader.set("normalMap", 1);
@@ -63,6 +67,7 @@ int main(int argc, char** argv) try {
     shader.set("aoMap", 4);
     shader.set("useDerivativeTangents", 0);
     shader.set("untextured", untextured ? 1 : 0);
+    pbr::selectView(shader, view);
 
     const std::vector<light_types::Object> objects = light_types::objects();
     std::map<std::string, pbr::PbrTextures> sets;  // each material set loaded once
@@ -105,9 +110,8 @@ int main(int argc, char** argv) try {
             shader.set("textureOffset", object.offset);
             shader.set("albedoTint", untextured && object.floor ? glm::vec4(0.8f, 0.8f, 0.8f, 1.0f)
                                                                 : object.tint);
-            shader.set("metallicFactor", object.metallic);
-            shader.set("roughnessFactor",
-                       untextured ? (object.floor ? 0.9f : 0.4f) : object.roughness);
+            shader.set("metallicFactor", untextured ? object.plainMetallic : object.metallic);
+            shader.set("roughnessFactor", untextured ? object.plainRoughness : object.roughness);
             shader.setModel(object.model);
             (object.floor ? floorMesh : sphere).draw();
         }

@@ -35,8 +35,9 @@ inline std::vector<pbr::PackedLight> sceneLights(pbr::Attenuation pointAttenuati
         // and a soft band of 6 more
         pbr::spotLight({0.0f, 6.0f, 2.5f}, {0.0f, -1.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, 40.0f, 18.0f,
                        6.0f, {1.0f, 0.045f, 0.0075f}),
-        // a greenish ambient box around the right sphere and its patch of floor
-        pbr::ambientBoxLight({5.0f, 1.0f, 0.5f}, {1.6f, 1.5f, 2.0f}, {0.25f, 0.6f, 0.3f}, 2.0f),
+        // a greenish ambient box around the right sphere's lower part and its patch of floor,
+        // 1.25 m high: the sphere's top (1.6 m) stands out of it
+        pbr::ambientBoxLight({5.0f, 0.5f, 0.5f}, {1.6f, 0.75f, 2.0f}, {0.25f, 0.6f, 0.3f}, 2.0f),
         // an orange ambient sphere around the second sphere
         pbr::ambientSphereLight({-2.5f, 0.8f, 0.8f}, 1.7f, {0.8f, 0.45f, 0.15f}, 2.0f),
     };
@@ -50,6 +51,9 @@ struct Object {
     glm::vec4 tint{1.0f};
     float metallic = 1.0f, roughness = 1.0f;  // factors on the maps
     bool floor = false;
+    // The tests' plain material (--untextured): white maps, so that the factors are the values.
+    // The floor a rough dielectric; the spheres' metallic 0, 1/4, ... 1 from left to right.
+    float plainMetallic = 0.0f, plainRoughness = 0.4f;
 };
 
 // The floor (object 0), then the five spheres from left to right.
@@ -62,12 +66,15 @@ inline std::vector<Object> objects() {
     floor.tiling = {8.0f, 5.0f};
     floor.offset = {0.25f, 0.0f};
     floor.floor = true;
+    floor.plainRoughness = 0.9f;
     objects.push_back(floor);
     // five spheres in a row, 2.5 m apart, resting on the floor
     const char* sets[5] = {"rusted_iron", "gold", "grass", "plastic", "wall"};
     for (int i = 0; i < 5; ++i) {
-        objects.push_back({sets[i], glm::scale(glm::translate(glm::mat4(1.0f), sphereCentre(i)),
-                                               glm::vec3(kSphereRadius))});
+        Object sphere{sets[i], glm::scale(glm::translate(glm::mat4(1.0f), sphereCentre(i)),
+                                          glm::vec3(kSphereRadius))};
+        sphere.plainMetallic = float(i) / 4.0f;
+        objects.push_back(sphere);
     }
     objects[3].tiling = {2.0f, 1.0f};              // grass: twice around
     objects[4].tint = {0.45f, 0.65f, 1.0f, 1.0f};  // plastic, tinted blue

@@ -17,6 +17,7 @@ uniform vec3 camPos;
 #include "brdf.glsl"
 #include "material_maps.glsl"
 #include "tonemap.glsl"
+#include "views.glsl"
 
 void main()
 {
@@ -35,5 +36,13 @@ void main()
 
     vec3 ambient = vec3(0.03) * m.albedo * m.ao;
     vec3 color = gammaCorrect(reinhard(ambient + Lo));
+#ifdef TERM_VIEWS  // --view: one input or term of the equation instead (views.glsl)
+    DirectSums sums = noDirectSums();
+    for (int i = 0; i < lightCount; ++i)
+        addDirectTerms(sums, N, V, normalize(lightPositions[i] - WorldPos), m.albedo, m.metallic,
+                       m.roughness);
+    color = directView(termView, m.albedo, N, m.metallic, m.roughness, m.ao, sums,
+                       gammaCorrect(reinhard(Lo)));
+#endif
     FragColor = vec4(color, 1.0);
 }

@@ -19,9 +19,11 @@ uniform vec3 lightPositions[MAX_LIGHTS];
 uniform vec3 lightColors[MAX_LIGHTS];
 
 uniform vec3 camPos;
+uniform bool noIbl;  // --no-ibl: no ambient light, the point lights alone (false: the lesson)
 
 #include "brdf.glsl"
 #include "tonemap.glsl"
+#include "views.glsl"
 
 void main()
 {
@@ -43,8 +45,18 @@ void main()
     vec3 kD = (1.0 - kS) * (1.0 - metallic);
     vec3 irradiance = texture(irradianceMap, N).rgb;
     vec3 diffuse = irradiance * albedo;
-    vec3 ambient = (kD * diffuse) * ao;
+    vec3 ambient = noIbl ? vec3(0.0) : (kD * diffuse) * ao;
 
     vec3 color = gammaCorrect(reinhard(ambient + Lo));
+#ifdef TERM_VIEWS  // --view: one input or term of the equation instead (views.glsl)
+    DirectSums sums = noDirectSums();
+    for (int i = 0; i < lightCount; ++i)
+        addDirectTerms(sums, N, V, normalize(lightPositions[i] - WorldPos), albedo, metallic,
+                       roughness);
+    color = directView(termView, albedo, N, metallic, roughness, ao, sums,
+                       gammaCorrect(reinhard(Lo)));
+    color = iblView(termView, irradiance, vec3(0.0), vec2(0.0), ambient, vec3(0.0),
+                    gammaCorrect(reinhard(ambient)), color);
+#endif
     FragColor = vec4(color, 1.0);
 }

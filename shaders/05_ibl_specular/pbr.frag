@@ -17,10 +17,12 @@ uniform vec3 lightPositions[MAX_LIGHTS];
 uniform vec3 lightColors[MAX_LIGHTS];
 
 uniform vec3 camPos;
+uniform bool noIbl;  // --no-ibl: no ambient light, the point lights alone (false: the lesson)
 
 #include "brdf.glsl"
 #include "ibl_ambient.glsl"
 #include "tonemap.glsl"
+#include "views.glsl"
 
 void main()
 {
@@ -36,6 +38,19 @@ void main()
         Lo += directLight(N, V, L, radiance, albedo, metallic, roughness);
     }
 
-    vec3 color = gammaCorrect(reinhard(ambientLight(N, V, albedo, metallic, roughness, ao) + Lo));
+    vec3 ambient = noIbl ? vec3(0.0) : ambientLight(N, V, albedo, metallic, roughness, ao);
+    vec3 color = gammaCorrect(reinhard(ambient + Lo));
+#ifdef TERM_VIEWS  // --view: one input or term of the equation instead (views.glsl)
+    DirectSums sums = noDirectSums();
+    for (int i = 0; i < lightCount; ++i)
+        addDirectTerms(sums, N, V, normalize(lightPositions[i] - WorldPos), albedo, metallic,
+                       roughness);
+    color = directView(termView, albedo, N, metallic, roughness, ao, sums,
+                       gammaCorrect(reinhard(Lo)));
+    AmbientTerms t = ambientTerms(N, V, albedo, metallic, roughness);
+    float shown = noIbl ? 0.0 : ao;
+    color = iblView(termView, t.reads.irradiance, t.reads.prefilteredColor, t.reads.envBRDF,
+                    t.diffuse * shown, t.specular * shown, gammaCorrect(reinhard(ambient)), color);
+#endif
     FragColor = vec4(color, 1.0);
 }

@@ -13,11 +13,13 @@ uniform vec3 lightPositions[MAX_LIGHTS];
 uniform vec3 lightColors[MAX_LIGHTS];
 
 uniform vec3 camPos;
+uniform bool noIbl;  // --no-ibl: no ambient light, the point lights alone (false: the lesson)
 
 #include "brdf.glsl"
 #include "ibl_ambient.glsl"
 #include "material_maps.glsl"
 #include "tonemap.glsl"
+#include "views.glsl"
 
 void main()
 {
@@ -33,6 +35,20 @@ void main()
         Lo += directLight(m.N, V, L, radiance, m.albedo, m.metallic, m.roughness);
     }
 
-    vec3 ambient = ambientLight(m.N, V, m.albedo, m.metallic, m.roughness, m.ao);
-    FragColor = vec4(gammaCorrect(reinhard(ambient + Lo)), 1.0);
+    vec3 ambient =
+        noIbl ? vec3(0.0) : ambientLight(m.N, V, m.albedo, m.metallic, m.roughness, m.ao);
+    vec3 color = gammaCorrect(reinhard(ambient + Lo));
+#ifdef TERM_VIEWS  // --view: one input or term of the equation instead (views.glsl)
+    DirectSums sums = noDirectSums();
+    for (int i = 0; i < lightCount; ++i)
+        addDirectTerms(sums, m.N, V, normalize(lightPositions[i] - WorldPos), m.albedo,
+                       m.metallic, m.roughness);
+    color = directView(termView, m.albedo, m.N, m.metallic, m.roughness, m.ao, sums,
+                       gammaCorrect(reinhard(Lo)));
+    AmbientTerms t = ambientTerms(m.N, V, m.albedo, m.metallic, m.roughness);
+    float shown = noIbl ? 0.0 : m.ao;
+    color = iblView(termView, t.reads.irradiance, t.reads.prefilteredColor, t.reads.envBRDF,
+                    t.diffuse * shown, t.specular * shown, gammaCorrect(reinhard(ambient)), color);
+#endif
+    FragColor = vec4(color, 1.0);
 }

@@ -15,13 +15,14 @@ uniform vec2 textureOffset;   // u_TextureOffset
 uniform vec4 albedoTint;      // u_Albedo: multiplies the albedo map (its rgb in linear terms)
 uniform float metallicFactor; // u_Metallic
 uniform float roughnessFactor;// u_Roughness
-uniform bool untextured;      // the tests' plain material: albedo = the tint, metallic 0,
-                              // roughness = the factor, ao 1, no normal map
+uniform bool untextured;      // the tests' plain material: white maps (albedo = the tint,
+                              // metallic and roughness = the factors), ao 1, no normal map
 
 #include "brdf.glsl"
 #include "material_maps.glsl"
-#include "light_types.glsl"
 #include "tonemap.glsl"
+#include "views.glsl"
+#include "light_types.glsl"
 
 void main()
 {
@@ -32,7 +33,7 @@ void main()
     if (untextured)
     {
         m.albedo = vec3(1.0);
-        m.metallic = 0.0;
+        m.metallic = 1.0;
         m.roughness = 1.0;
         m.ao = 1.0;
         m.N = normalize(Normal);
@@ -46,5 +47,9 @@ void main()
     float roughness = clamp(m.roughness * roughnessFactor, 0.0, 1.0);
     vec3 V = normalize(camPos - WorldPos);
     vec3 color = shadeLights(WorldPos, m.N, V, albedo, metallic, roughness, m.ao);
-    FragColor = vec4(gammaCorrect(reinhard(color)), 1.0);
+    color = gammaCorrect(reinhard(color));
+#ifdef TERM_VIEWS  // --view: one input or term of the equation instead (light_types.glsl)
+    color = lightTypesView(termView, m.N, albedo, metallic, roughness, m.ao);
+#endif
+    FragColor = vec4(color, 1.0);
 }

@@ -59,9 +59,20 @@ SplitSumReads readSplitSum(vec3 N, vec3 V, float roughness)
     return s;
 }
 
-vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, float ao)
+// The ambient light's two parts before occlusion, and the reads they come from: the term views
+// (views.glsl) show them apart, the picture their sum (ambientLight).
+struct AmbientTerms
 {
+    SplitSumReads reads;
+    vec3 diffuse;
+    vec3 specular;
+};
+
+AmbientTerms ambientTerms(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness)
+{
+    AmbientTerms t;
     SplitSumReads s = readSplitSum(N, V, roughness);
+    t.reads = s;
     float NdotV = s.NdotV;
     vec3 F0 = mix(vec3(0.04), albedo, metallic);
     vec3 irradiance = s.irradiance;
@@ -73,15 +84,23 @@ vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, 
         // glTF's mix of a dielectric (F0 0.04 over a diffuse base) and a metal (F0 = albedo).
         float dielectricE = 0.04 * envBRDF.x + envBRDF.y;
         vec3 E = F0 * envBRDF.x + envBRDF.y;
-        vec3 diffuse = (1.0 - metallic) * albedo * irradiance * (1.0 - dielectricE);
-        return (diffuse + prefilteredColor * E) * ao;
+        t.diffuse = (1.0 - metallic) * albedo * irradiance * (1.0 - dielectricE);
+        t.specular = prefilteredColor * E;
+        return t;
     }
     vec3 F = fresnelSchlickRoughness(NdotV, F0, roughness);
     vec3 kS = F;
     vec3 kD = (1.0 - kS) * (1.0 - metallic);
     vec3 diffuse = irradiance * albedo;
-    vec3 specular = prefilteredColor * (F * envBRDF.x + envBRDF.y);
-    return (kD * diffuse + specular) * ao;
+    t.diffuse = kD * diffuse;
+    t.specular = prefilteredColor * (F * envBRDF.x + envBRDF.y);
+    return t;
+}
+
+vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, float ao)
+{
+    AmbientTerms t = ambientTerms(N, V, albedo, metallic, roughness);
+    return (t.diffuse + t.specular) * ao;
 }
 
 // The glTF samples' image-based light: the exact split sum above for the specification's mix of

@@ -1,7 +1,8 @@
 // The Overload engine's five light types, read from one buffer (sample 09). Each light is the
 // engine's mat4, here a struct of four vec4 columns mirrored by pbr::PackedLight
 // (common/math/light_block.h, which documents every slot); the block by pbr::LightBlock. Mirrored
-// on the CPU by pbr::cpu::shadeLightTypes (common/math/brdf.cpp). Needs brdf.glsl.
+// on the CPU by pbr::cpu::shadeLightTypes (common/math/brdf.cpp). Needs brdf.glsl, and for the
+// term views views.glsl and tonemap.glsl before it.
 
 const int MAX_LIGHTS = 255;  // pbr::LightBlock::kMaxLights: 16 KiB, the block size GL 3.3 guarantees
 
@@ -55,6 +56,46 @@ bool insideAmbientSphere(Light light, vec3 p)
     return distance(p, light.positionConstant.xyz) < light.positionConstant.w;
 }
 
+// What one light brings to `position`: a direct light's radiance there (attenuation and cone
+// included) from the unit direction it sets in L; an ambient volume's colour where the volume
+// holds the point, else nothing.
+vec3 lightRadiance(Light light, vec3 position, out vec3 L)
+{
+    int type = int(light.typeCutoffOuterIntensity.x);
+    vec3 color = light.colorQuadratic.rgb * light.typeCutoffOuterIntensity.w;
+    L = vec3(0.0, 1.0, 0.0);
+    if (type == LIGHT_AMBIENT_BOX)
+        return insideAmbientBox(light, position) ? color : vec3(0.0);
+    if (type == LIGHT_AMBIENT_SPHERE)
+        return insideAmbientSphere(light, position) ? color : vec3(0.0);
+    if (type == LIGHT_DIRECTIONAL)
+    {
+        L = normalize(-light.forwardLinear.xyz);
+        return color;
+    }
+    vec3 toLight = light.positionConstant.xyz - position;
+    L = normalize(toLight);
+    float coefficient = lightAttenuation(light, length(toLight));
+    if (type == LIGHT_SPOT)
+        coefficient *= spotCone(light, L);
+    return color * coefficient;
+}
+
+bool isAmbientVolume(Light light)
+{
+    int type = int(light.typeCutoffOuterIntensity.x);
+    return type == LIGHT_AMBIENT_BOX || type == LIGHT_AMBIENT_SPHERE;
+}
+
+#ifdef TERM_VIEWS
+// What the term views take from the loop below, gathered as it runs: the direct lights' terms,
+// summed over those that reach the point (above its horizon, and inside a spot's cone), and the
+// two kinds of light apart (lightTypesView).
+DirectSums viewSums;
+vec3 viewDirect;
+vec3 viewAmbient;
+#endif
+
 // Outgoing radiance at `position`: the direct lights through directLight (brdf.glsl) plus the
 // ambient volumes that contain the point, x albedo x ao. Linear, before tone mapping.
 vec3 shadeLights(vec3 position, vec3 N, vec3 V, vec3 albedo, float metallic, float roughness,
@@ -62,38 +103,40 @@ vec3 shadeLights(vec3 position, vec3 N, vec3 V, vec3 albedo, float metallic, flo
 {
     vec3 Lo = vec3(0.0);
     vec3 ambient = vec3(0.0);
+#ifdef TERM_VIEWS
+    viewSums = noDirectSums();
+#endif
     for (int i = 0; i < lightCount; ++i)
     {
-        Light light = lights[i];
-        int type = int(light.typeCutoffOuterIntensity.x);
-        vec3 color = light.colorQuadratic.rgb * light.typeCutoffOuterIntensity.w;
-        if (type == LIGHT_AMBIENT_BOX)
-        {
-            if (insideAmbientBox(light, position))
-                ambient += color;
-            continue;
-        }
-        if (type == LIGHT_AMBIENT_SPHERE)
-        {
-            if (insideAmbientSphere(light, position))
-                ambient += color;
-            continue;
-        }
         vec3 L;
-        float coefficient = 1.0;
-        if (type == LIGHT_DIRECTIONAL)
+        vec3 radiance = lightRadiance(lights[i], position, L);
+        if (isAmbientVolume(lights[i]))
         {
-            L = normalize(-light.forwardLinear.xyz);
+            ambient += radiance;
+            continue;
         }
-        else
-        {
-            vec3 toLight = light.positionConstant.xyz - position;
-            L = normalize(toLight);
-            coefficient = lightAttenuation(light, length(toLight));
-            if (type == LIGHT_SPOT)
-                coefficient *= spotCone(light, L);
-        }
-        Lo += directLight(N, V, L, color * coefficient, albedo, metallic, roughness);
+        Lo += directLight(N, V, L, radiance, albedo, metallic, roughness);
+#ifdef TERM_VIEWS
+        if (radiance != vec3(0.0))
+            addDirectTerms(viewSums, N, V, L, albedo, metallic, roughness);
+#endif
     }
+#ifdef TERM_VIEWS
+    viewDirect = Lo;
+    viewAmbient = ambient;
+#endif
     return ambient * albedo * ao + Lo;
 }
+
+#ifdef TERM_VIEWS
+// 09's term views (views.glsl), after shadeLights has run at this point: the inputs; the direct
+// lights' terms; the direct light alone and the ambient volumes' light alone (x albedo x ao),
+// each through the picture's Reinhard and gamma.
+vec3 lightTypesView(int which, vec3 N, vec3 albedo, float metallic, float roughness, float ao)
+{
+    if (which == VIEW_AMBIENT)
+        return gammaCorrect(reinhard(viewAmbient * albedo * ao));
+    return directView(which, albedo, N, metallic, roughness, ao, viewSums,
+                      gammaCorrect(reinhard(viewDirect)));
+}
+#endif

@@ -7,8 +7,11 @@
 //   inputs as they are (albedo, metallic, roughness, ao, F0 = mix(0.04, albedo, metallic)), the
 //   world-space normal as 0.5 + 0.5 N; a light-dependent term (D, G, F, the specular term, the
 //   diffuse term, NdotL) summed over the lights above the surface's horizon (NdotL > 0), then
-//   shown as x / (1 + x); the direct light alone through the sample's own tone mapping.
-// Needs brdf.glsl and tonemap.glsl.
+//   shown as x / (1 + x); the direct light alone through the sample's own tone mapping. The
+//   image-based light's reads (irradiance, the prefiltered radiance) and the two parts of the
+//   ambient light as x / (1 + x), the LUT's (scale, bias) as they are, the ambient light alone
+//   through the sample's own tone mapping.
+// Needs brdf.glsl.
 #ifdef TERM_VIEWS
 uniform int termView;  // not `view`: the vertex shaders' view matrix has that name
 
@@ -26,6 +29,12 @@ const int VIEW_SPECULAR = 10;
 const int VIEW_DIFFUSE = 11;
 const int VIEW_NDOTL = 12;
 const int VIEW_DIRECT = 13;
+const int VIEW_IRRADIANCE = 14;
+const int VIEW_PREFILTERED = 15;
+const int VIEW_LUT = 16;
+const int VIEW_AMBIENT_DIFFUSE = 17;
+const int VIEW_AMBIENT_SPECULAR = 18;
+const int VIEW_AMBIENT = 19;
 
 // The light-dependent terms, summed over the lights (see addDirectTerms).
 struct DirectSums
@@ -83,5 +92,22 @@ vec3 directView(int which, vec3 albedo, vec3 N, float metallic, float roughness,
     if (which == VIEW_NDOTL) return viewCompress(vec3(sums.NdotL));
     if (which == VIEW_DIRECT) return directColor;
     return vec3(1.0, 0.0, 1.0);  // a view this sample does not have: never asked for (--view)
+}
+
+// What an image-based light's view shows (04, 05), and `otherwise` for any other view. The reads
+// at this point: `irradiance` at N, `prefiltered` along R at the roughness's level, the LUT's
+// (scale, bias); the ambient light's two parts, occlusion included, which sum to the ambient
+// light (`ambientDiffuse` + `ambientSpecular`, zero both when the sample's image-based light is
+// off), and `ambientColor`, the ambient light alone as the picture tone maps it.
+vec3 iblView(int which, vec3 irradiance, vec3 prefiltered, vec2 lut, vec3 ambientDiffuse,
+             vec3 ambientSpecular, vec3 ambientColor, vec3 otherwise)
+{
+    if (which == VIEW_IRRADIANCE) return viewCompress(irradiance);
+    if (which == VIEW_PREFILTERED) return viewCompress(prefiltered);
+    if (which == VIEW_LUT) return vec3(lut, 0.0);
+    if (which == VIEW_AMBIENT_DIFFUSE) return viewCompress(ambientDiffuse);
+    if (which == VIEW_AMBIENT_SPECULAR) return viewCompress(ambientSpecular);
+    if (which == VIEW_AMBIENT) return ambientColor;
+    return otherwise;
 }
 #endif  // TERM_VIEWS

@@ -105,7 +105,10 @@ std::function<std::string(const glm::vec3&)> rings(
 fs::path writeLitSquare(const fs::path& dir, const std::string& name, const std::string& lightsJson,
                         const std::string& lightNodesJson, int lightNodeCount) {
     std::string sceneNodes = "0";
-    for (int i = 1; i <= lightNodeCount; ++i) sceneNodes += "," + std::to_string(i);
+    for (int i = 1; i <= lightNodeCount; ++i) {
+        sceneNodes += ',';  // not "," + std::to_string(i): GCC 12 warns falsely (-Wrestrict)
+        sceneNodes += std::to_string(i);
+    }
     return writeTextFile(dir, name, R"({"asset":{"version":"2.0"},
 "extensionsUsed":["KHR_lights_punctual"],
 )" + squareBuffersJson(2.0f) + R"(

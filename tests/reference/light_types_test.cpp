@@ -9,18 +9,22 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "reference/view_terms.h"
 #include "support/golden.h"
 #include "support/mesh_hit.h"
 #include "support/process.h"
 
 #include "../../samples/09_light_types/scene.h"
 #include "files/image.h"
+#include "gl/mesh.h"
 #include "math/brdf.h"
 #include "math/camera.h"
 
@@ -180,6 +184,155 @@ TEST(Reference, LightTypes09AttenuationTermsEachAlone) {
             checkType("point", {"--attenuation", flag}, terms, 1, nullptr, false);
         report(std::string("point, attenuation ") + flag, check);
         EXPECT_GT(check.compared, 5000) << flag;
+    }
+}
+
+// ---- 09's term views, on the floor and the spheres ----
+
+constexpr int kViewWidth = 640, kViewHeight = 360;
+
+// What each pixel centre of the plain scene (--untextured) sees: the floor or a sphere (the very
+// triangles of the 64 x 32 mesh the GPU draws, normals interpolated at the hit), as the surface
+// point the CPU shades; object 0 the floor, 1-5 the spheres left to right, -1 nothing.
+struct ScenePixel {
+    int object = -1;
+    cpu::SurfacePoint surface;
+};
+
+std::vector<ScenePixel> plainScene() {
+    const FlyCamera camera(kEye, kYaw, kPitch);
+    const glm::dmat4 toWorld = glm::inverse(glm::dmat4(
+        camera.projectionMatrix(float(kViewWidth) / float(kViewHeight)) * camera.viewMatrix()));
+    const MeshData sphere = uvSphere(64, 32);
+    const std::vector<light_types::Object> objects = light_types::objects();
+    std::vector<ScenePixel> pixels(size_t(kViewWidth) * kViewHeight);
+    for (int py = 0; py < kViewHeight; ++py) {
+        for (int px = 0; px < kViewWidth; ++px) {
+            const auto [origin, direction] = pixelRay(toWorld, kViewWidth, kViewHeight, px, py);
+            ScenePixel& pixel = pixels[size_t(py) * kViewWidth + size_t(px)];
+            double nearest = 1e30;
+            if (direction.y < 0.0) {
+                const double t = -origin.y / direction.y;
+                const glm::dvec3 p = origin + t * direction;
+                if (std::abs(p.x) < light_types::kFloorHalfX &&
+                    std::abs(p.z) < light_types::kFloorHalfZ) {
+                    nearest = t;
+                    pixel.object = 0;
+                    pixel.surface = {glm::vec3(p), {0.0f, 1.0f, 0.0f}, glm::vec3(0.8f),
+                                     objects[0].plainMetallic, objects[0].plainRoughness, 1.0f};
+                }
+            }
+            for (int i = 0; i < 5; ++i) {
+                const glm::dvec3 c(light_types::sphereCentre(i));
+                const double along = glm::dot(c - origin, direction);
+                if (glm::length(c - origin - along * direction) > light_types::kSphereRadius + 0.01)
+                    continue;  // not even near the sphere
+                const auto hit =
+                    hitUvSphere(sphere, 64, 32, glm::dmat4(objects[size_t(i + 1)].model), origin,
+                                direction);
+                if (!hit || hit->distance >= nearest) continue;
+                nearest = hit->distance;
+                pixel.object = i + 1;
+                const light_types::Object& object = objects[size_t(i + 1)];
+                pixel.surface = {glm::vec3(hit->position), glm::vec3(hit->normal),
+                                 glm::vec3(object.tint), object.plainMetallic,
+                                 object.plainRoughness, 1.0f};
+            }
+        }
+    }
+    return pixels;
+}
+
+// A view of the plain scene at `s` by its definition in 09's README: the inputs as they are (the
+// normal as 0.5 + 0.5 N); a direct light's term summed over the lights that reach the point
+// (above its horizon, inside a spot's cone) as x / (1 + x); the direct light alone, the ambient
+// volumes' light alone and the picture through Reinhard and gamma.
+glm::dvec3 lightTypesView(const std::string& view, const cpu::SurfacePoint& s,
+                          std::span<const PackedLight> lights) {
+    const glm::vec3 N = s.normal, V = glm::normalize(kEye - s.position);
+    if (const auto input = inputView(view, s)) return *input;
+    if (view == "final") return glm::dvec3(cpu::reinhardGamma(cpu::shadeLightTypes(s, kEye, lights)));
+    glm::dvec3 sum(0.0);
+    glm::vec3 direct(0.0f), ambient(0.0f);
+    for (const PackedLight& light : lights) {
+        glm::vec3 L;
+        const glm::vec3 radiance = cpu::lightTypeRadiance(light, s.position, L);
+        if (cpu::isAmbientVolume(light)) {
+            ambient += radiance;
+            continue;
+        }
+        direct += cpu::directLight(N, V, L, radiance, s.albedo, s.metallic, s.roughness);
+        if (radiance == glm::vec3(0.0f) || glm::dot(N, L) <= 0.0f) continue;
+        const cpu::CookTorrance t = cpu::cookTorrance(N, V, L, s.albedo, s.metallic, s.roughness);
+        addTermView(view, t, s.albedo, sum);
+    }
+    if (view == "direct") return glm::dvec3(cpu::reinhardGamma(direct));
+    if (view == "ambient") return glm::dvec3(cpu::reinhardGamma(ambient * s.albedo * s.ao));
+    return sum / (1.0 + sum);
+}
+
+// Every view of 09's plain scene, every pixel whose four neighbours see the same object and whose
+// prediction the neighbours' does not change by more than 8/255 (off the silhouettes, the ambient
+// volumes' steps and the pin-point highlights), within 2/255. Among them the right sphere's top,
+// above the ambient box (1.25 m), and the spheres' metallic, 0 to 1 from left to right: the box's
+// height and the metallic factor, which the tests above, on the floor alone, could not see.
+TEST(Reference, LightTypes09TermViewsMatchTheCpu) {
+    const fs::path dir = testOutputDir("reference_09_views");
+    const std::vector<ScenePixel> scene = plainScene();
+    const std::vector<PackedLight> lights = light_types::sceneLights(light_types::kPointAttenuation);
+    auto at = [&](int px, int py) -> const ScenePixel& {
+        return scene[size_t(py) * kViewWidth + size_t(px)];
+    };
+    for (const char* view : {"albedo", "normal", "metallic", "roughness", "ao", "f0", "d", "g",
+                             "f", "specular", "diffuse", "ndotl", "direct", "ambient", "final"}) {
+        SCOPED_TRACE(std::string("--view ") + view);
+        const SampleRender render = renderSample(
+            "09_light_types", dir / (std::string(view) + ".png"),
+            {"--untextured", "--msaa", "0", "--size",
+             std::to_string(kViewWidth) + "x" + std::to_string(kViewHeight), "--camera",
+             "0,5.5,12,-90,-22", "--view", view});
+        ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+        const Image image = readImage(render.image, 3);
+        ASSERT_EQ(image.width, kViewWidth);
+        int compared = 0, onSpheres = 0, aboveTheBox = 0, failed = 0, worst = 0;
+        for (int py = 1; py + 1 < kViewHeight; ++py) {
+            for (int px = 1; px + 1 < kViewWidth; ++px) {
+                const ScenePixel& pixel = at(px, py);
+                if (pixel.object < 0) continue;
+                const glm::dvec3 expected = 255.0 * lightTypesView(view, pixel.surface, lights);
+                bool steady = true;
+                for (const auto& [dx, dy] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}}) {
+                    const ScenePixel& n = at(px + dx, py + dy);
+                    if (n.object != pixel.object ||
+                        glm::length(255.0 * lightTypesView(view, n.surface, lights) - expected) >
+                            8.0)
+                        steady = false;
+                }
+                if (!steady) continue;
+                for (int c = 0; c < 3; ++c) {
+                    const int diff =
+                        std::abs(int(image.at(px, py, c)) - int(std::lround(expected[c])));
+                    worst = std::max(worst, diff);
+                    if (diff > 2 && ++failed <= 5) {
+                        ADD_FAILURE() << "object " << pixel.object << " pixel (" << px << ", "
+                                      << py << ") channel " << c << ": rendered "
+                                      << int(image.at(px, py, c)) << ", CPU " << expected[c];
+                    }
+                }
+                ++compared;
+                if (pixel.object > 0) ++onSpheres;
+                if (pixel.object == 5 && pixel.surface.position.y > 1.3f) ++aboveTheBox;
+            }
+        }
+        EXPECT_EQ(failed, 0) << "channels off by more than 2/255";
+        std::printf("--view %s: compared %d pixels (%d on the spheres, %d of the right sphere "
+                    "above the ambient box); worst channel diff %d/255\n",
+                    view, compared, onSpheres, aboveTheBox, worst);
+        EXPECT_GT(compared, 50000);
+        EXPECT_GT(onSpheres, 5000);
+        if (std::string(view) == "ambient") {
+            EXPECT_GT(aboveTheBox, 100);
+        }
     }
 }
 

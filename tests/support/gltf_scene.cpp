@@ -231,7 +231,10 @@ int componentsOf(const std::string& type) {
 
 std::string numberList(const std::vector<float>& values) {
     std::string out;
-    for (float v : values) out += (out.empty() ? "" : ",") + std::to_string(v);
+    for (float v : values) {
+        if (!out.empty()) out += ',';  // not "," + std::to_string(v): GCC 12 warns falsely
+        out += std::to_string(v);
+    }
     return out;
 }
 

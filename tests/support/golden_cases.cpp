@@ -64,6 +64,31 @@ std::vector<GoldenCase> goldenCases() {
                          {"--view", view, "--size", "480x270"},
                          0.1});
     }
+    // 02's views of the rusted iron, on the tutorial's close-up view (02's README).
+    for (const char* view : {"albedo", "normal", "metallic", "roughness", "d"}) {
+        cases.push_back({std::string("02_view_") + view,
+                         "02_lighting_textured",
+                         {"--view", view, "--size", "480x270", "--camera", "0,0,3"},
+                         0.3});
+    }
+    // The image-based light's views (05's README, "Term views"), and 04's parts of the light each
+    // alone (04's README).
+    for (const char* view :
+         {"irradiance", "prefiltered", "lut", "ambient-diffuse", "ambient-specular"}) {
+        std::string name = std::string("05_view_") + view;
+        std::replace(name.begin(), name.end(), '-', '_');
+        cases.push_back({name, "05_ibl_specular", {"--view", view, "--size", "480x270"}, 0.1});
+    }
+    cases.push_back(
+        {"04_view_irradiance", "04_ibl_irradiance", {"--view", "irradiance", "--size", "480x270"}, 0.1});
+    cases.push_back(
+        {"04_lights_0", "04_ibl_irradiance", {"--lights", "0", "--size", "480x270"}, 0.1});
+    cases.push_back({"04_no_ibl", "04_ibl_irradiance", {"--no-ibl", "--size", "480x270"}, 0.1});
+    // 09's plain material seen through its metallic view: the metallic factors, 0 to 1 (09's README).
+    cases.push_back({"09_view_metallic",
+                     "09_light_types",
+                     {"--untextured", "--view", "metallic", "--size", "480x270"},
+                     0.02});
     // 09: the whole scene, and each kind of light alone.
     cases.push_back({"09_light_types", "09_light_types", {}, 0.1});
     for (const char* only : {"point", "directional", "spot", "ambient-box", "ambient-sphere"}) {

@@ -1,0 +1,292 @@
+// The term views (--view NAME) of the grid samples against the CPU, each by its definition in
+// the sample's README. The inputs and the direct light's terms (01, 04, 05) come from the CPU
+// mirror of the BRDF (cpu::cookTorrance); the image-based light's (04, 05) from an environment
+// whose convolutions have closed forms, so that the irradiance, the prefiltered radiance and the
+// LUT each have a value derived apart from the code that computes them. Which term, which
+// lights, which channel and which encoding each view shows is this test's reading of the README.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "files/image.h"
+#include "math/brdf.h"
+#include "reference/grid_scene.h"
+#include "reference/view_terms.h"
+#include "support/golden.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The environment of the image-based light's views: linear in the direction w, along another
+// axis in each channel (a swapped channel or a mirrored axis shows), and never far from 1:
+//   L(w) = a + b w (per channel), a = (0.6, 0.5, 0.45), b = (0.4 w.x, 0.3 w.y, -0.35 w.z).
+// Its convolutions have closed forms. The irradiance map holds the cosine-weighted mean of L over
+// the hemisphere around N (the irradiance over pi), and the cosine-weighted mean of w there is
+// (2/3) N. The prefiltered map's level for roughness r holds the mean of L over the GGX lobe
+// around R as the text weighs it (half vectors H drawn from D(H) NdotH, each L weighted by
+// NdotL, with N = V = R); the lobe is symmetric about R, so the mean of w is k(r) R (lobeMean).
+constexpr glm::dvec3 kSkyMean{0.6, 0.5, 0.45};
+glm::dvec3 skySlope(const glm::dvec3& w) {
+    return {0.4 * w.x, 0.3 * w.y, -0.35 * w.z};
+}
+glm::dvec3 sky(const glm::dvec3& w) {
+    return kSkyMean + skySlope(w);
+}
+
+// The environment as an equirectangular .hdr: column u = atan(w.z, w.x) / 2 pi + 1/2 and the top
+// row straight up, as LearnOpenGL's SampleSphericalMap reads it (with the image's rows top first).
+fs::path writeLinearSky(const fs::path& dir) {
+    constexpr int kW = 512, kH = 256;
+    HdrImage image{kW, kH, {}};
+    for (int y = 0; y < kH; ++y) {
+        for (int x = 0; x < kW; ++x) {
+            const double phi = ((x + 0.5) / kW - 0.5) * 2.0 * std::numbers::pi;
+            const double lat = (0.5 - (y + 0.5) / kH) * std::numbers::pi;
+            const glm::dvec3 w(std::cos(lat) * std::cos(phi), std::sin(lat),
+                               std::cos(lat) * std::sin(phi));
+            const glm::dvec3 L = sky(w);
+            image.pixels.insert(image.pixels.end(), {float(L.r), float(L.g), float(L.b)});
+        }
+    }
+    const fs::path path = dir / "linear_sky.hdr";
+    writeHdr(path, image);
+    return path;
+}
+
+// k(r): the mean of w.R over the lobe, by Simpson's rule in the half vector's angle t from R,
+// L at 2t from it:  k = integral of cos^2(2t) D(t) cos t sin t / integral of cos(2t) D(t) cos t
+// sin t, t from 0 to pi/4 (NdotL > 0), D = GGX with alpha = r^2.
+double lobeMean(double roughness) {
+    const double a2 = std::pow(roughness, 4.0);
+    constexpr int kSteps = 20000;
+    const double h = (std::numbers::pi / 4.0) / kSteps;
+    double top = 0.0, bottom = 0.0;
+    for (int i = 0; i <= kSteps; ++i) {
+        const double t = i * h, c = std::cos(t);
+        const double d = c * c * (a2 - 1.0) + 1.0;
+        const double weight = (i == 0 || i == kSteps ? 1.0 : (i % 2 ? 4.0 : 2.0)) * a2 /
+                              (std::numbers::pi * d * d) * c * std::sin(t) * std::cos(2.0 * t);
+        top += weight * std::cos(2.0 * t);
+        bottom += weight;
+    }
+    return top / bottom;
+}
+
+// The three reads of the split sum at a surface point, from the closed forms.
+struct SkyReads {
+    glm::dvec3 irradiance, prefiltered;
+    glm::dvec2 lut;
+};
+
+class LinearSkyReads {
+public:
+    LinearSkyReads() {
+        for (int level = 1; level <= 4; ++level) levelMean_[size_t(level)] = lobeMean(level / 4.0);
+    }
+
+    // `roughness` is one of the grid's columns' (its LUT row is kept in a table of NdotV); the
+    // LUT is read only `withLut` (04 has none).
+    SkyReads at(const glm::dvec3& N, const glm::dvec3& V, double roughness, bool withLut) {
+        SkyReads reads;
+        reads.irradiance = kSkyMean + skySlope(2.0 / 3.0 * N);
+        // The prefiltered map's five levels are roughness 0, 1/4, ... 1, read trilinearly at
+        // level 4 r; below level 1 the environment itself stands for level 0.
+        const glm::dvec3 R = glm::reflect(-V, N);
+        const double lod = roughness * 4.0;
+        const int below = std::min(int(lod), 3);
+        reads.prefiltered = kSkyMean + skySlope(R) * glm::mix(levelMean_[size_t(below)],
+                                                              levelMean_[size_t(below + 1)],
+                                                              lod - below);
+        if (withLut) reads.lut = lut(std::max(glm::dot(N, V), 0.0), roughness);
+        return reads;
+    }
+
+private:
+    // cpu::splitSumQuadrature at NdotV = 24/64, 25/64, ... 1 for each of the grid's roughnesses,
+    // linearly interpolated (the quadrature is smooth there: the interpolation errs by under
+    // 0.001) and computed once, when first asked for: each point takes milliseconds.
+    static glm::dvec2 lut(double NdotV, double roughness) {
+        static std::map<double, std::vector<glm::dvec2>> rows;
+        constexpr int kFirst = 24, kLast = 64;
+        if (NdotV < kFirst / 64.0) return cpu::splitSumQuadrature(NdotV, roughness);
+        std::vector<glm::dvec2>& row = rows[roughness];
+        if (row.empty()) {
+            for (int i = kFirst; i <= kLast; ++i)
+                row.push_back(cpu::splitSumQuadrature(i / 64.0, roughness));
+        }
+        const double x = NdotV * 64.0 - kFirst;
+        const int i = std::min(int(x), kLast - kFirst - 1);
+        return glm::mix(row[size_t(i)], row[size_t(i + 1)], x - i);
+    }
+
+    std::array<double, 5> levelMean_{1.0, 0.0, 0.0, 0.0, 0.0};  // level 0: the mirror
+};
+
+// What a grid sample draws with: its point lights, its image-based light (none in 01; the
+// irradiance alone in 04, the ambient light's diffuse part; the split sum in 05, in the text's
+// form or the exact one) and whether that is on (--no-ibl).
+struct GridLighting {
+    std::span<const cpu::PointLight> lights = kGridLights;
+    enum class Ibl { None, Irradiance, SplitSum } ibl = Ibl::None;
+    bool iblOn = true;
+    bool exactSplitSum = false;
+};
+
+// A view of a grid sample at surface point `s`, each by its definition in the samples' READMEs:
+// the inputs as they are (the normal as 0.5 + 0.5 N); a light-dependent term summed over the
+// lights above the horizon (NdotL > 0) and shown as x / (1 + x); the direct light alone through
+// the picture's Reinhard and gamma; the image-based light's reads and the ambient light's two
+// parts (occlusion included, zero with --no-ibl) as x / (1 + x), the LUT's scale and bias as
+// they are (red, green), the ambient light alone and the picture ("final", 04 and 05) through
+// Reinhard and gamma. The terms come from the CPU mirror (cpu::cookTorrance,
+// cpu::splitSumAmbient); which term, which lights, which channel and which encoding each view
+// shows is this test's reading.
+glm::dvec3 gridView(const std::string& view, const cpu::SurfacePoint& s, const glm::vec3& camera,
+                    const GridLighting& lighting, LinearSkyReads& skyReads) {
+    const glm::vec3 N = s.normal, V = glm::normalize(camera - s.position);
+    if (const auto input = inputView(view, s)) return *input;
+    auto compress = [](const glm::dvec3& x) { return x / (1.0 + x); };
+    glm::dvec3 sum(0.0), direct(0.0);
+    for (const cpu::PointLight& light : lighting.lights) {
+        const glm::vec3 L = glm::normalize(light.position - s.position);
+        const float distance = glm::length(light.position - s.position);
+        direct += glm::dvec3(cpu::directLight(N, V, L, light.color / (distance * distance),
+                                              s.albedo, s.metallic, s.roughness));
+        if (glm::dot(N, L) <= 0.0f) continue;
+        const cpu::CookTorrance t = cpu::cookTorrance(N, V, L, s.albedo, s.metallic, s.roughness);
+        addTermView(view, t, s.albedo, sum);
+    }
+    if (view == "direct") return glm::dvec3(cpu::reinhardGamma(glm::vec3(direct)));
+    if (lighting.ibl == GridLighting::Ibl::None) return compress(sum);
+
+    const SkyReads reads = skyReads.at(glm::dvec3(N), glm::dvec3(V), s.roughness,
+                                       lighting.ibl == GridLighting::Ibl::SplitSum);
+    if (view == "irradiance") return compress(reads.irradiance);
+    if (view == "prefiltered") return compress(reads.prefiltered);
+    if (view == "lut") return {reads.lut, 0.0};
+    cpu::SplitSumAmbient ambient = cpu::splitSumAmbient(
+        std::max(glm::dot(N, V), 0.0f), s.albedo, s.metallic, s.roughness,
+        glm::vec3(reads.irradiance), glm::vec3(reads.prefiltered), glm::vec2(reads.lut),
+        lighting.exactSplitSum);
+    if (lighting.ibl == GridLighting::Ibl::Irradiance) ambient.specular = glm::vec3(0.0f);
+    const float shown = lighting.iblOn ? s.ao : 0.0f;
+    const glm::dvec3 diffuse(ambient.diffuse * shown), specular(ambient.specular * shown);
+    if (view == "ambient-diffuse") return compress(diffuse);
+    if (view == "ambient-specular") return compress(specular);
+    if (view == "ambient") return glm::dvec3(cpu::reinhardGamma(glm::vec3(diffuse + specular)));
+    if (view == "final")
+        return glm::dvec3(cpu::reinhardGamma(glm::vec3(diffuse + specular + direct)));
+    return compress(sum);
+}
+
+// The surface at a hit on sphere (row, col), or nullopt where it must not be compared.
+using SurfaceAt = std::function<std::optional<cpu::SurfacePoint>(const Hit&, int row, int col)>;
+std::optional<cpu::SurfacePoint> constantMaterial(const Hit& hit, int row, int col) {
+    return gridSurface(hit.position, hit.normal, row, col);
+}
+
+// Renders `views` of a grid sample (640 x 360, no MSAA; `args` added) and compares each with
+// gridView on the spheres, where NdotV >= 0.5.
+void compareViews(const std::string& sample, const std::vector<std::string>& views,
+                  const std::vector<std::string>& args, const GridLighting& lighting,
+                  double gridZ, const fs::path& dir,
+                  const SurfaceAt& surfaceAt = constantMaterial) {
+    LinearSkyReads skyReads;
+    const GridFrame frame{.width = 640, .height = 360, .gridZ = gridZ};
+    for (const std::string& view : views) {
+        SCOPED_TRACE(sample + " --view " + view);
+        std::vector<std::string> all = {"--msaa", "0", "--size", "640x360", "--view", view};
+        all.insert(all.end(), args.begin(), args.end());
+        fs::create_directories(dir);
+        const SampleRender render = renderSample(sample, dir / (view + ".png"), all);
+        ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+        const Image image = readImage(render.image, 3);
+        ASSERT_EQ(image.width, frame.width);
+        const Comparison result = compareGrid(
+            image, [&](double x, double y, int row, int col) -> std::optional<glm::dvec3> {
+                const auto hit = hitSphere(x, y, row, col, frame);
+                if (!hit || hit->ndotv < 0.5) return std::nullopt;
+                const auto surface = surfaceAt(*hit, row, col);
+                if (!surface) return std::nullopt;
+                return 255.0 *
+                       gridView(view, *surface, glm::vec3(gridCamera(gridZ)), lighting, skyReads);
+            });
+        std::printf("%s --view %s: compared %d pixels (skipped %d); worst channel diff %.0f/255\n",
+                    sample.c_str(), view.c_str(), result.checked, result.skipped, result.worst);
+        EXPECT_GE(result.checked, 49 * 20);
+    }
+}
+
+const std::vector<std::string> kInputAndDirectViews = {
+    "albedo", "normal", "metallic", "roughness", "ao", "f0", "d",
+    "g",      "f",      "specular", "diffuse",   "ndotl", "direct"};
+
+TEST(Reference, Lighting01TermViewsMatchTheCpu) {
+    compareViews("01_lighting", kInputAndDirectViews, {}, {}, 0.0,
+                 testOutputDir("reference_01_views"));
+}
+
+// 02 in a material of random texels, drawn with nearest filtering so that the CPU reads the
+// texel the GPU reads (randomTexels): every input as the maps give it (the normal after the normal
+// map), every term of its one light.
+TEST(Reference, Textured02TermViewsMatchTheCpu) {
+    const fs::path dir = testOutputDir("reference_02_views");
+    const TexelMaterial material = randomTexels();
+    const fs::path set = writeTexelMaterial(material, dir / "random_texels");
+    compareViews("02_lighting_textured", kInputAndDirectViews,
+                 {"--filter", "nearest", "--material-dir", set.string()},
+                 {.lights = std::span(&kTexturedGridLight, 1)}, 0.0, dir,
+                 [&](const Hit& hit, int, int) { return texelSurface(material, hit); });
+}
+
+// 04 and 05 in the linear sky. Every view of each, then the parts of the light each alone: the
+// image-based light without the point lights (--lights 0: the picture is the ambient light),
+// the point lights without it (--no-ibl), and 05's exact split sum, whose diffuse is what the
+// dielectric's lobe leaves.
+TEST(Reference, Irradiance04TermViewsMatchTheCpu) {
+    const fs::path dir = testOutputDir("reference_04_views");
+    const std::string hdr = writeLinearSky(dir).string();
+    std::vector<std::string> views = kInputAndDirectViews;
+    views.insert(views.end(), {"irradiance", "ambient-diffuse", "ambient", "final"});
+    const GridLighting lighting{.ibl = GridLighting::Ibl::Irradiance};
+    compareViews("04_ibl_irradiance", views, {"--hdr", hdr}, lighting, -2.0, dir);
+
+    compareViews("04_ibl_irradiance", {"final"}, {"--hdr", hdr, "--lights", "0"},
+                 {.lights = {}, .ibl = GridLighting::Ibl::Irradiance}, -2.0, dir / "no_lights");
+    compareViews("04_ibl_irradiance", {"final", "ambient"}, {"--hdr", hdr, "--no-ibl"},
+                 {.ibl = GridLighting::Ibl::Irradiance, .iblOn = false}, -2.0, dir / "no_ibl");
+}
+
+TEST(Reference, SplitSum05TermViewsMatchTheCpu) {
+    const fs::path dir = testOutputDir("reference_05_views");
+    const std::string hdr = writeLinearSky(dir).string();
+    std::vector<std::string> views = kInputAndDirectViews;
+    views.insert(views.end(), {"irradiance", "prefiltered", "lut", "ambient-diffuse",
+                               "ambient-specular", "ambient", "final"});
+    const GridLighting lighting{.ibl = GridLighting::Ibl::SplitSum};
+    compareViews("05_ibl_specular", views, {"--hdr", hdr}, lighting, -2.0, dir);
+
+    compareViews("05_ibl_specular", {"ambient-diffuse", "ambient-specular", "final"},
+                 {"--hdr", hdr, "--split-sum", "exact"},
+                 {.ibl = GridLighting::Ibl::SplitSum, .exactSplitSum = true}, -2.0,
+                 dir / "exact");
+    compareViews("05_ibl_specular", {"final"}, {"--hdr", hdr, "--lights", "0"},
+                 {.lights = {}, .ibl = GridLighting::Ibl::SplitSum}, -2.0, dir / "no_lights");
+    compareViews("05_ibl_specular", {"final", "ambient"}, {"--hdr", hdr, "--no-ibl"},
+                 {.ibl = GridLighting::Ibl::SplitSum, .iblOn = false}, -2.0, dir / "no_ibl");
+}
+
+}  // namespace
+}  // namespace pbr::test
