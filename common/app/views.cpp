@@ -21,7 +21,8 @@ constexpr Named kNames[] = {
     {View::NdotL, "ndotl"},       {View::Direct, "direct"},     {View::Irradiance, "irradiance"},
     {View::Prefiltered, "prefiltered"}, {View::Lut, "lut"},
     {View::AmbientDiffuse, "ambient-diffuse"}, {View::AmbientSpecular, "ambient-specular"},
-    {View::Ambient, "ambient"},
+    {View::Ambient, "ambient"},   {View::BaseColor, "base-color"}, {View::Occlusion, "occlusion"},
+    {View::Emissive, "emissive"},
 };
 }  // namespace
 

@@ -45,8 +45,28 @@ enum class View {
     AmbientDiffuse = 17,
     AmbientSpecular = 18,
     Ambient = 19,
+    // the glTF samples' names for their inputs: base colour, occlusion, and emission
+    BaseColor = 20,
+    Occlusion = 21,
+    Emissive = 22,
 };
 
+// 07's and 08's: the glTF material's inputs, the punctual lights' terms, the split sum's.
+inline constexpr View kGltfViews[] = {
+    View::Final,       View::BaseColor,   View::Normal,         View::Metallic,
+    View::Roughness,   View::Occlusion,   View::Emissive,       View::F0,
+    View::D,           View::G,           View::F,              View::Specular,
+    View::Diffuse,     View::NdotL,       View::Direct,         View::Irradiance,
+    View::Prefiltered, View::Lut,         View::AmbientDiffuse, View::AmbientSpecular,
+    View::Ambient};
+// Every view, in the order of their numbers (the unit test's list).
+inline constexpr View kAllViews[] = {
+    View::Final,      View::Albedo,         View::Normal,          View::Metallic,
+    View::Roughness,  View::Ao,             View::F0,              View::D,
+    View::G,          View::F,              View::Specular,        View::Diffuse,
+    View::NdotL,      View::Direct,         View::Irradiance,      View::Prefiltered,
+    View::Lut,        View::AmbientDiffuse, View::AmbientSpecular, View::Ambient,
+    View::BaseColor,  View::Occlusion,      View::Emissive};
 // Every view the direct-light samples have, in the order --help lists them.
 inline constexpr View kDirectLightViews[] = {
     View::Final, View::Albedo, View::Normal,   View::Metallic, View::Roughness,
@@ -72,7 +92,8 @@ inline constexpr View kSplitSumViews[] = {
     View::Lut,        View::AmbientDiffuse, View::AmbientSpecular, View::Ambient};
 
 // "final", "albedo", "normal", ..., "d", "g", "f", "specular", "diffuse", "ndotl", "direct",
-// "irradiance", "prefiltered", "lut", "ambient-diffuse", "ambient-specular", "ambient".
+// "irradiance", "prefiltered", "lut", "ambient-diffuse", "ambient-specular", "ambient",
+// "base-color", "occlusion", "emissive".
 std::string_view viewName(View view);
 // The shaders' VIEW_ constant of a view: "VIEW_NDOTL", "VIEW_AMBIENT_DIFFUSE".
 std::string viewConstant(View view);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/app.h"
+#include "app/views.h"
 #include "base/paths.h"
 #include "gltf/gltf_renderer.h"
 #include "gltf/model.h"
@@ -72,6 +73,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
                                      1e-4, 1e4));
     flags.push_back(FlagSpec::toggle("--no-ibl", "leave out the image-based light"));
     flags.push_back(FlagSpec::toggle("--no-punctual", "leave out the file's punctual lights"));
+    flags.push_back(viewFlag(kGltfViews));
     flags.push_back(FlagSpec::toggle("--single-scattering",
                                      "image-based light without the multiple-scattering energy "
                                      "(rough metals darken, as in 05)"));
@@ -91,7 +93,8 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     describe(model, punctual);
     app.useOrbitCamera(model.boundsMin, model.boundsMax);
 
-    Shader& shader = app.shader("common/gltf.vert", "common/gltf.frag");
+    const View view = viewNamed(app.flagChoice("--view"));
+    Shader& shader = app.shader("common/gltf.vert", "common/gltf.frag", viewDefines(view));
     GltfRenderer renderer(shader);
     if (punctual) {
         const std::vector<PunctualLight> fallback = {defaultLight()};
@@ -102,6 +105,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     shader.set("multipleScattering", app.options().has("--single-scattering") ? 0 : 1);
     shader.set("toneMapper", toneMapper);
     shader.set("exposure", exposure);
+    selectView(shader, view);
 
     // 05's maps, from the same cache: irradiance 32^2, prefiltered 128^2 with 5 mips, the BRDF
     // LUT 512^2. Units 5-7 hold them for the whole run. Every map is made (or read) here, before

@@ -185,22 +185,54 @@ GltfSurface specularGlossinessSurface(const glm::vec3& position, const glm::vec3
     return {position, normal, diffuse * (1.0f - strongest), specular, 1.0f - glossiness};
 }
 
-glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
-                          const glm::vec3& radiance, const GltfSurface& s) {
-    const float NdotL = std::clamp(glm::dot(N, L), 0.0f, 1.0f);
-    if (NdotL <= 0.0f) return glm::vec3(0.0f);
+GltfBrdf gltfBrdf(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                  const GltfSurface& s) {
+    GltfBrdf b;
+    b.NdotL = std::clamp(glm::dot(N, L), 0.0f, 1.0f);
     const glm::vec3 H = glm::normalize(V + L);
-    const float NdotV = std::clamp(glm::dot(N, V), 0.0f, 1.0f);
+    b.NdotV = std::clamp(glm::dot(N, V), 0.0f, 1.0f);
     const float NdotH = std::clamp(glm::dot(N, H), 0.0f, 1.0f);
     const float VdotH = std::clamp(glm::dot(V, H), 0.0f, 1.0f);
     const float alpha = std::max(s.roughness * s.roughness, kMinGgxAlpha);
     const float schlick = std::pow(1.0f - VdotH, 5.0f);
     const glm::vec3 dielectricF = s.F0 + (1.0f - s.F0) * schlick;
     const glm::vec3 metalF = s.metalColor + (1.0f - s.metalColor) * schlick;
-    const glm::vec3 diffuse = (1.0f - s.metallic) * (1.0f - dielectricF) * s.diffuseColor / PI;
-    const glm::vec3 specular = glm::mix(dielectricF, metalF, s.metallic) * D_GGX(NdotH, alpha) *
-                               V_GGX(NdotL, NdotV, alpha);
-    return (diffuse + specular) * radiance * NdotL;
+    b.D = D_GGX(NdotH, alpha);
+    b.Vis = V_GGX(b.NdotL, b.NdotV, alpha);
+    b.F = glm::mix(dielectricF, metalF, s.metallic);
+    b.diffuse = (1.0f - s.metallic) * (1.0f - dielectricF) * s.diffuseColor / PI;
+    b.specular = b.F * b.D * b.Vis;
+    return b;
+}
+
+glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                          const glm::vec3& radiance, const GltfSurface& s) {
+    if (glm::dot(N, L) <= 0.0f) return glm::vec3(0.0f);
+    const GltfBrdf b = gltfBrdf(N, V, L, s);
+    return (b.diffuse + b.specular) * radiance * b.NdotL;
+}
+
+GltfAmbient gltfAmbient(const GltfSurface& s, const glm::vec3& irradiance,
+                        const glm::vec3& prefiltered, const glm::vec2& scaleBias,
+                        bool multipleScattering) {
+    // what a lobe of reflectance F0 returns, and the share of the light it takes
+    auto lobe = [&](const glm::vec3& F0, glm::vec3& share) {
+        const glm::vec3 single = F0 * scaleBias.x + scaleBias.y;
+        glm::vec3 multiple(0.0f);
+        if (multipleScattering) {
+            const float lost = 1.0f - (scaleBias.x + scaleBias.y);
+            const glm::vec3 averageF = F0 + (1.0f - F0) / 21.0f;
+            multiple = lost * averageF * single / (1.0f - averageF * lost);
+        }
+        share = single + multiple;
+        return single * prefiltered + multiple * irradiance;
+    };
+    GltfAmbient ambient;
+    glm::vec3 dielectricShare, metalShare;
+    ambient.dielectricSpecular = lobe(s.F0, dielectricShare);
+    ambient.metal = lobe(s.metalColor, metalShare);
+    ambient.diffuse = s.diffuseColor * irradiance * (1.0f - dielectricShare);
+    return ambient;
 }
 
 float rangeAttenuation(float range, float distance) {

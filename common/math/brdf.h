@@ -131,6 +131,34 @@ GltfSurface metallicRoughnessSurface(const glm::vec3& position, const glm::vec3&
 GltfSurface specularGlossinessSurface(const glm::vec3& position, const glm::vec3& normal,
                                       const glm::vec3& diffuse, const glm::vec3& specular,
                                       float glossiness);
+// The terms of that BRDF for one light direction (brdf.glsl's gltfBrdf): D, the visibility
+// Vis = G / (4 NdotL NdotV), F of the dielectric and metal mixed, the diffuse and specular lobes
+// before radiance and NdotL, NdotL and NdotV.
+struct GltfBrdf {
+    float D = 0.0f;
+    float Vis = 0.0f;
+    glm::vec3 F{0.0f};
+    glm::vec3 diffuse{0.0f};
+    glm::vec3 specular{0.0f};
+    float NdotL = 0.0f;
+    float NdotV = 0.0f;
+};
+GltfBrdf gltfBrdf(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                  const GltfSurface& surface);
+// The glTF samples' image-based light at a point, from the split sum's three reads there (see
+// splitSumAmbient): its parts before occlusion, which mix(diffuse + dielectricSpecular, metal,
+// metallic) sums. A lobe of reflectance F0 returns E_ss = F0 scale + bias of the prefiltered
+// radiance; with multiple scattering (Fdez-Aguera, JCGT 2019) also
+// E_ms = (1 - scale - bias) F_avg E_ss / (1 - F_avg (1 - scale - bias)) of the irradiance,
+// F_avg = F0 + (1 - F0) / 21; the dielectric's diffuse layer gets 1 - (E_ss + E_ms) of its lobe.
+struct GltfAmbient {
+    glm::vec3 diffuse{0.0f};
+    glm::vec3 dielectricSpecular{0.0f};
+    glm::vec3 metal{0.0f};
+};
+GltfAmbient gltfAmbient(const GltfSurface& surface, const glm::vec3& irradiance,
+                        const glm::vec3& prefiltered, const glm::vec2& scaleBias,
+                        bool multipleScattering);
 // mix(dielectric BRDF, metal BRDF, metallic) for one light (brdf.glsl's gltfDirectLight).
 glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
                           const glm::vec3& radiance, const GltfSurface& surface);

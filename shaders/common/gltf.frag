@@ -24,6 +24,8 @@ uniform float exposure;
 #include "punctual_lights.glsl"
 #include "gltf_material.glsl"
 #include "tonemap.glsl"
+#include "views.glsl"
+#include "gltf_views.glsl"
 
 void main()
 {
@@ -48,4 +50,7 @@ void main()
                                       m.roughness) * m.occlusion;
     }
     FragColor = vec4(toneMap(color, toneMapper, exposure), m.alpha);
+#ifdef TERM_VIEWS  // --view: one input or term of the equation instead (gltf_views.glsl)
+    FragColor.rgb = gltfView(termView, m, normalize(camPos - WorldPos));
+#endif
 }

@@ -118,25 +118,49 @@ float V_GGX(float NdotL, float NdotV, float alpha)
 // GGX's peak becomes 0 / 0: alpha stays at or above this, as the CPU mirror's does.
 const float MIN_GGX_ALPHA = 0.002;
 
-// Radiance towards V from light arriving along L with `radiance`, for a surface given as its
-// dielectric layer (diffuse colour c_diff under a specular layer of reflectance F0 at normal
-// incidence), its metal's colour, and how metallic it is.
-vec3 gltfDirectLight(vec3 N, vec3 V, vec3 L, vec3 radiance, vec3 diffuseColor, vec3 F0,
-                     vec3 metalColor, float metallic, float roughness)
+// The terms of the glTF BRDF for one light direction L, as gltfDirectLight combines them (the
+// term views show them apart): D, the visibility Vis = G / (4 NdotL NdotV), F of the dielectric
+// and metal mixed, the diffuse and specular lobes (before radiance and NdotL), NdotL and NdotV.
+struct GltfBrdf
 {
-    float NdotL = clamp(dot(N, L), 0.0, 1.0);
-    if (NdotL <= 0.0)
-        return vec3(0.0);
+    float D;
+    float Vis;
+    vec3 F;
+    vec3 diffuse;
+    vec3 specular;
+    float NdotL;
+    float NdotV;
+};
+
+GltfBrdf gltfBrdf(vec3 N, vec3 V, vec3 L, vec3 diffuseColor, vec3 F0, vec3 metalColor,
+                  float metallic, float roughness)
+{
+    GltfBrdf b;
+    b.NdotL = clamp(dot(N, L), 0.0, 1.0);
     vec3 H = normalize(V + L);
-    float NdotV = clamp(dot(N, V), 0.0, 1.0);
+    b.NdotV = clamp(dot(N, V), 0.0, 1.0);
     float NdotH = clamp(dot(N, H), 0.0, 1.0);
     float VdotH = clamp(dot(V, H), 0.0, 1.0);
     float alpha = max(roughness * roughness, MIN_GGX_ALPHA);
     float schlick = pow(1.0 - VdotH, 5.0);
     vec3 dielectricF = F0 + (1.0 - F0) * schlick;
     vec3 metalF = metalColor + (1.0 - metalColor) * schlick;
-    vec3 diffuse = (1.0 - metallic) * (1.0 - dielectricF) * diffuseColor / PI;
-    vec3 specular = mix(dielectricF, metalF, metallic) * D_GGX(NdotH, alpha) *
-                    V_GGX(NdotL, NdotV, alpha);
-    return (diffuse + specular) * radiance * NdotL;
+    b.D = D_GGX(NdotH, alpha);
+    b.Vis = V_GGX(b.NdotL, b.NdotV, alpha);
+    b.F = mix(dielectricF, metalF, metallic);
+    b.diffuse = (1.0 - metallic) * (1.0 - dielectricF) * diffuseColor / PI;
+    b.specular = b.F * b.D * b.Vis;
+    return b;
+}
+
+// Radiance towards V from light arriving along L with `radiance`, for a surface given as its
+// dielectric layer (diffuse colour c_diff under a specular layer of reflectance F0 at normal
+// incidence), its metal's colour, and how metallic it is.
+vec3 gltfDirectLight(vec3 N, vec3 V, vec3 L, vec3 radiance, vec3 diffuseColor, vec3 F0,
+                     vec3 metalColor, float metallic, float roughness)
+{
+    if (dot(N, L) <= 0.0)
+        return vec3(0.0);
+    GltfBrdf b = gltfBrdf(N, V, L, diffuseColor, F0, metalColor, metallic, roughness);
+    return (b.diffuse + b.specular) * radiance * b.NdotL;
 }

@@ -136,14 +136,34 @@ vec3 specularIbl(vec3 F0, SplitSumReads s, out vec3 albedo)
     return single * s.prefilteredColor + multiple * s.irradiance;
 }
 
-// c_diff, F0 and metalColor as gltfDirectLight takes them. Occlusion is the caller's.
+// The glTF image-based light's parts before occlusion and the reads they come from: the
+// dielectric's diffuse layer and specular lobe, and the metal's lobe (the term views show them
+// apart, ambientLightGltf mixes them). c_diff, F0 and metalColor as gltfDirectLight takes them.
+struct GltfAmbientTerms
+{
+    SplitSumReads reads;
+    vec3 diffuse;
+    vec3 dielectricSpecular;
+    vec3 metal;
+};
+
+GltfAmbientTerms gltfAmbientTerms(vec3 N, vec3 V, vec3 diffuseColor, vec3 F0, vec3 metalColor,
+                                  float roughness)
+{
+    GltfAmbientTerms t;
+    t.reads = readSplitSum(N, V, roughness);
+    vec3 dielectricAlbedo, metalAlbedo;
+    t.dielectricSpecular = specularIbl(F0, t.reads, dielectricAlbedo);
+    t.metal = specularIbl(metalColor, t.reads, metalAlbedo);
+    t.diffuse = diffuseColor * t.reads.irradiance * (1.0 - dielectricAlbedo);
+    return t;
+}
+
+// Occlusion is the caller's.
 vec3 ambientLightGltf(vec3 N, vec3 V, vec3 diffuseColor, vec3 F0, vec3 metalColor, float metallic,
                       float roughness)
 {
-    SplitSumReads s = readSplitSum(N, V, roughness);
-    vec3 dielectricAlbedo, metalAlbedo;
-    vec3 dielectricSpecular = specularIbl(F0, s, dielectricAlbedo);
-    vec3 metal = specularIbl(metalColor, s, metalAlbedo);
-    vec3 dielectric = diffuseColor * s.irradiance * (1.0 - dielectricAlbedo) + dielectricSpecular;
-    return mix(dielectric, metal, metallic);
+    GltfAmbientTerms t = gltfAmbientTerms(N, V, diffuseColor, F0, metalColor, roughness);
+    vec3 dielectric = t.diffuse + t.dielectricSpecular;
+    return mix(dielectric, t.metal, metallic);
 }

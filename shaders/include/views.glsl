@@ -35,6 +35,9 @@ const int VIEW_LUT = 16;
 const int VIEW_AMBIENT_DIFFUSE = 17;
 const int VIEW_AMBIENT_SPECULAR = 18;
 const int VIEW_AMBIENT = 19;
+const int VIEW_BASE_COLOR = 20;  // the glTF samples' names for their inputs (gltf_views.glsl)
+const int VIEW_OCCLUSION = 21;
+const int VIEW_EMISSIVE = 22;
 
 // The light-dependent terms, summed over the lights (see addDirectTerms).
 struct DirectSums

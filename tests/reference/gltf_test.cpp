@@ -15,7 +15,9 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <span>
 
+#include "reference/linear_sky.h"
 #include "support/gltf_scene.h"
 #include "support/golden.h"
 #include "support/mesh_hit.h"
@@ -34,12 +36,13 @@ namespace fs = std::filesystem;
 constexpr int kSize = 400;  // square renders: --size 400x400
 
 
-// 07 on `model`, image-based light off, no tone mapping, no MSAA, from `eye` (looking at the
-// model's centre).
+// 07 on `model`, image-based light off (or, `ibl`, the file's punctual lights), no tone mapping,
+// no MSAA, from `eye` (looking at the model's centre).
 Image render07(const fs::path& dir, const fs::path& model, const glm::vec3& eye,
                std::vector<std::string> extra = {},
-               const std::string& sample = "07_gltf_metallic_roughness") {
-    std::vector<std::string> args = {"--model", model.string(), "--no-ibl", "--tonemap", "none",
+               const std::string& sample = "07_gltf_metallic_roughness", bool ibl = false) {
+    std::vector<std::string> args = {"--model", model.string(), ibl ? "--no-punctual" : "--no-ibl",
+                                     "--tonemap", "none",
                                      "--msaa", "0", "--size",
                                      std::to_string(kSize) + "x" + std::to_string(kSize),
                                      "--camera",
@@ -66,15 +69,18 @@ struct Rays {
     }
 };
 
-// The CPU's sRGB bytes for a surface, or nullopt where they are ill-conditioned (see the top).
-using Shade = std::function<glm::vec3(const glm::vec3& normal)>;
+// The CPU's sRGB bytes for a surface, or nullopt where they are ill-conditioned (see the top) or
+// where `shade` gives none (a point a test leaves out).
+using Shade = std::function<std::optional<glm::vec3>(const glm::vec3& normal)>;
 std::optional<glm::ivec3> expectedBytes(const Shade& shade, const glm::vec3& normal) {
     auto bytes = [&](const glm::vec3& n) {
-        const glm::vec3 c = shade(glm::normalize(n));
-        return glm::ivec3(int(std::lround(linearToSrgb(c.r) * 255.0)),
-                          int(std::lround(linearToSrgb(c.g) * 255.0)),
-                          int(std::lround(linearToSrgb(c.b) * 255.0)));
+        const std::optional<glm::vec3> c = shade(glm::normalize(n));
+        if (!c) return glm::ivec3(-1000);
+        return glm::ivec3(int(std::lround(linearToSrgb(c->r) * 255.0)),
+                          int(std::lround(linearToSrgb(c->g) * 255.0)),
+                          int(std::lround(linearToSrgb(c->b) * 255.0)));
     };
+    if (!shade(normal)) return std::nullopt;
     const glm::ivec3 centre = bytes(normal);
     const glm::vec3 a = glm::normalize(glm::cross(normal, std::abs(normal.x) < 0.9f
                                                               ? glm::vec3(1, 0, 0)
@@ -272,12 +278,22 @@ struct SphereCheck {
 };
 using SurfaceOf = std::function<std::optional<cpu::GltfSurface>(
     const Model&, const Material&, const glm::vec3& position, const glm::vec3& normal)>;
+// The linear value a pixel holds before the sRGB encoding, for a surface seen from `eye` under
+// `lights` (nullopt: not compared): by default the picture's, the sum over the lights.
+using ShadeSurface = std::function<std::optional<glm::vec3>(
+    const cpu::GltfSurface&, const glm::vec3& eye, std::span<const PunctualLight> lights)>;
+std::optional<glm::vec3> shadeUnderLights(const cpu::GltfSurface& surface, const glm::vec3& eye,
+                                          std::span<const PunctualLight> lights) {
+    return cpu::shadePunctualLights(surface, eye, lights);
+}
 SphereCheck compareSpheres(const fs::path& dir, const std::string& sample, const fs::path& file,
-                           const std::string& prefix, const SurfaceOf& surfaceOf) {
+                           const std::string& prefix, const SurfaceOf& surfaceOf,
+                           const std::vector<std::string>& extra = {},
+                           const ShadeSurface& shadeSurface = shadeUnderLights, bool ibl = false) {
     const Model model = loadModel(file);
     const glm::vec3 centre = 0.5f * (model.boundsMin + model.boundsMax);
     const glm::vec3 eye = centre + glm::vec3(0.0f, 0.2f, 4.0f);
-    const Image image = render07(dir, file, eye, {}, sample);
+    const Image image = render07(dir, file, eye, extra, sample, ibl);
     const Rays rays(model, eye);
     const ModelRayCaster caster(model, glm::dmat4(1.0));
     SphereCheck check;
@@ -292,8 +308,8 @@ SphereCheck compareSpheres(const fs::path& dir, const std::string& sample, const
             const glm::vec3 position(hit->position);
             if (!surfaceOf(model, material, position, glm::vec3(hit->normal))) continue;
             const Shade shade = [&](const glm::vec3& normal) {
-                return cpu::shadePunctualLights(*surfaceOf(model, material, position, normal), eye,
-                                                model.lights);
+                return shadeSurface(*surfaceOf(model, material, position, normal), eye,
+                                    model.lights);
             };
             const auto expected = expectedBytes(shade, glm::vec3(hit->normal));
             if (!expected) continue;
@@ -317,7 +333,9 @@ SphereCheck compareSpheres(const fs::path& dir, const std::string& sample, const
 SphereCheck compareShowcaseSpheres(
     const std::string& name,
     const std::function<bool(const Material&, const Image& mr, float& metallic, float& roughness)>&
-        materialOf) {
+        materialOf,
+    const std::vector<std::string>& extra = {},
+    const ShadeSurface& shadeSurface = shadeUnderLights, bool ibl = false) {
     std::map<std::string, Image> textures;  // each material's, read once (not at every pixel)
     return compareSpheres(
         testOutputDir("reference_07_spheres_" + name), "07_gltf_metallic_roughness",
@@ -337,17 +355,20 @@ SphereCheck compareShowcaseSpheres(
             return cpu::metallicRoughnessSurface(position, normal,
                                                  glm::vec3(material.baseColorFactor), metallic,
                                                  roughness);
-        });
+        },
+        extra, shadeSurface, ibl);
+}
+
+// A solid metallic-roughness texture's values: its first texel; glTF: roughness = factor x G,
+// metallic = factor x B.
+bool solidTexture(const Material& m, const Image& mr, float& metallic, float& roughness) {
+    roughness = m.roughnessFactor * float(mr.at(0, 0, 1)) / 255.0f;
+    metallic = m.metallicFactor * float(mr.at(0, 0, 2)) / 255.0f;
+    return true;
 }
 
 TEST(Reference, Gltf07ShowcaseSpheresMatchTheCpu) {
-    const SphereCheck check = compareShowcaseSpheres(
-        "all", [](const Material& m, const Image& mr, float& metallic, float& roughness) {
-            // a solid texture: its first texel; glTF: roughness = factor x G, metallic = factor x B
-            roughness = m.roughnessFactor * float(mr.at(0, 0, 1)) / 255.0f;
-            metallic = m.metallicFactor * float(mr.at(0, 0, 2)) / 255.0f;
-            return true;
-        });
+    const SphereCheck check = compareShowcaseSpheres("all", solidTexture);
     std::printf("showcase spheres: %d pixels compared, worst channel difference %d/255\n",
                 check.total, check.worst);
     EXPECT_GT(check.total, 3000);
@@ -376,6 +397,161 @@ TEST(Reference, Gltf07MetallicRoughnessChannels) {
     for (const char* name : {"sphere_metal_0", "sphere_dielectric_4"}) {
         std::printf("%s: %d pixels compared\n", name, check.compared.at(name));
         EXPECT_GT(check.compared.at(name), 150) << name;
+    }
+}
+
+// The linear value that the sRGB encoding takes to v: what a view shows as it is is written so.
+glm::vec3 encodedAs(const glm::dvec3& v) {
+    return {float(srgbToLinear(std::clamp(v.r, 0.0, 1.0))),
+            float(srgbToLinear(std::clamp(v.g, 0.0, 1.0))),
+            float(srgbToLinear(std::clamp(v.b, 0.0, 1.0)))};
+}
+
+// A view of the glTF samples at `s` by its definition in 07's README: the inputs as they are
+// (the normal as 0.5 + 0.5 N; f0 = mix(F0, base colour, metallic)); a punctual light's term
+// summed over the lights that reach the point (NdotL > 0, radiance above 0), as x / (1 + x); the
+// direct light alone through the tone mapper (none here: clamped to [0, 1]). The terms are
+// cpu::gltfBrdf's; G = Vis x 4 NdotL NdotV.
+glm::vec3 gltfPunctualView(const std::string& view, const cpu::GltfSurface& s,
+                           const glm::vec3& eye, std::span<const PunctualLight> lights) {
+    const glm::vec3 N = s.normal, V = glm::normalize(eye - s.position);
+    if (view == "base-color") return encodedAs(glm::dvec3(s.metalColor));
+    if (view == "normal") return encodedAs(0.5 + 0.5 * glm::dvec3(N));
+    if (view == "metallic") return encodedAs(glm::dvec3(s.metallic));
+    if (view == "roughness") return encodedAs(glm::dvec3(s.roughness));
+    if (view == "occlusion") return encodedAs(glm::dvec3(1.0));  // no occlusion texture
+    if (view == "emissive") return encodedAs(glm::dvec3(0.0));   // no emission
+    if (view == "f0") return encodedAs(glm::dvec3(glm::mix(s.F0, s.metalColor, s.metallic)));
+    glm::dvec3 sum(0.0);
+    glm::vec3 direct(0.0f);
+    for (const PunctualLight& light : lights) {
+        glm::vec3 L;
+        const glm::vec3 radiance = cpu::punctualRadiance(light, s.position, L);
+        direct += cpu::gltfDirectLight(N, V, L, radiance, s);
+        if (glm::dot(N, L) <= 0.0f || radiance == glm::vec3(0.0f)) continue;
+        const cpu::GltfBrdf b = cpu::gltfBrdf(N, V, L, s);
+        if (view == "d") sum += glm::dvec3(b.D);
+        if (view == "g") sum += glm::dvec3(b.Vis * 4.0f * b.NdotL * b.NdotV);
+        if (view == "f") sum += glm::dvec3(b.F);
+        if (view == "specular") sum += glm::dvec3(b.specular);
+        if (view == "diffuse") sum += glm::dvec3(b.diffuse);
+        if (view == "ndotl") sum += glm::dvec3(b.NdotL);
+    }
+    if (view == "direct") return glm::clamp(direct, 0.0f, 1.0f);
+    return encodedAs(sum / (1.0 + sum));
+}
+
+// 07's term views of the inputs and of the punctual lights on the showcase's ten spheres (image-
+// based light off, no tone mapping), every other pixel against the CPU, within 2/255.
+TEST(Reference, Gltf07TermViewsMatchTheCpu) {
+    for (const std::string view :
+         {"base-color", "normal", "metallic", "roughness", "occlusion", "emissive", "f0", "d", "g",
+          "f", "specular", "diffuse", "ndotl", "direct"}) {
+        SCOPED_TRACE("--view " + view);
+        const SphereCheck check = compareShowcaseSpheres(
+            "view_" + view, solidTexture, {"--view", view},
+            [&](const cpu::GltfSurface& s, const glm::vec3& eye,
+                std::span<const PunctualLight> lights) -> std::optional<glm::vec3> {
+                return gltfPunctualView(view, s, eye, lights);
+            });
+        std::printf("--view %s: %d pixels compared, worst channel difference %d/255\n",
+                    view.c_str(), check.total, check.worst);
+        EXPECT_GT(check.total, 1500);
+        EXPECT_EQ(check.compared.size(), 10u);
+    }
+}
+
+// 07's image-based light's views on the showcase's spheres in the linear sky (tests/reference/
+// linear_sky.h: the irradiance, the prefiltered levels and the LUT in closed form), punctual
+// lights off, no tone mapping: the reads as x / (1 + x) (the LUT's scale and bias as they are),
+// the parts of cpu::gltfAmbient (multiple scattering on) as x / (1 + x), the ambient light alone
+// and the picture itself clamped to [0, 1].
+TEST(Reference, Gltf07IblTermViewsMatchTheCpu) {
+    const fs::path dir = testOutputDir("reference_07_ibl_views");
+    const std::string hdr = writeLinearSky(dir).string();
+    const LinearSkyReads skyReads;
+    auto compress = [](const glm::dvec3& x) { return x / (1.0 + x); };
+    for (const std::string view : {"irradiance", "prefiltered", "lut", "ambient-diffuse",
+                                   "ambient-specular", "ambient", "final"}) {
+        SCOPED_TRACE("--view " + view);
+        const SphereCheck check = compareShowcaseSpheres(
+            "ibl_view_" + view, solidTexture, {"--hdr", hdr, "--view", view},
+            [&](const cpu::GltfSurface& s, const glm::vec3& eye,
+                std::span<const PunctualLight>) -> std::optional<glm::vec3> {
+                const glm::dvec3 N(s.normal), V(glm::normalize(eye - s.position));
+                // away from the rims, as in 05's test: there the mirror's environment is read at
+                // a mip level the screen's derivatives choose, which blurs the sky's slope
+                if (glm::dot(N, V) < 0.5) return std::nullopt;
+                const SkyReads reads = skyReads.at(N, V, s.roughness, true);
+                if (view == "irradiance") return encodedAs(compress(reads.irradiance));
+                if (view == "prefiltered") return encodedAs(compress(reads.prefiltered));
+                if (view == "lut") return encodedAs({reads.lut, 0.0});
+                const cpu::GltfAmbient a =
+                    cpu::gltfAmbient(s, glm::vec3(reads.irradiance), glm::vec3(reads.prefiltered),
+                                     glm::vec2(reads.lut), true);
+                if (view == "ambient-diffuse")
+                    return encodedAs(compress(glm::dvec3((1.0f - s.metallic) * a.diffuse)));
+                if (view == "ambient-specular")
+                    return encodedAs(
+                        compress(glm::dvec3(glm::mix(a.dielectricSpecular, a.metal, s.metallic))));
+                return glm::clamp(glm::mix(a.diffuse + a.dielectricSpecular, a.metal, s.metallic),
+                                  0.0f, 1.0f);  // ambient, and the picture: nothing else lights it
+            },
+            true);
+        std::printf("--view %s: %d pixels compared, worst channel difference %d/255\n",
+                    view.c_str(), check.total, check.worst);
+        EXPECT_GT(check.total, 1500);
+        EXPECT_EQ(check.compared.size(), 10u);
+    }
+}
+
+// Occlusion and emission, which the showcase's spheres lack, on a square of known values: an
+// occlusion texture of R 128 (G 20, B 240: the wrong channels) at strength 0.8, so 1 - 0.8 +
+// 0.8 x 128/255; an emissive factor (0.9, 0.5, 0.2); a base colour (0.3, 0.6, 0.9). Each view
+// shows its value as it is, at every pixel of the square, within 2/255.
+TEST(Reference, Gltf07OcclusionAndEmissiveViews) {
+    const fs::path dir = testOutputDir("reference_07_square_views");
+    Image occlusion{2, 2, 3, {}};
+    for (int i = 0; i < 4 * 3; ++i) occlusion.pixels.push_back(std::uint8_t(i % 3 == 0 ? 128 : i % 3 == 1 ? 20 : 240));
+    writePng(dir / "occlusion.png", occlusion);
+    const fs::path file = writeTextFile(dir, "square.gltf", R"({"asset":{"version":"2.0"},
+)" + squareBuffersJson(1.0f) + R"(
+"images":[{"uri":"occlusion.png"}],
+"textures":[{"source":0}],
+"materials":[{"pbrMetallicRoughness":{"baseColorFactor":[0.3,0.6,0.9,1],"metallicFactor":0},
+  "occlusionTexture":{"index":0,"strength":0.8},"emissiveFactor":[0.9,0.5,0.2]}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) + R"(]}],
+"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})");
+    const Model model = loadModel(file);
+    const glm::vec3 eye(0.0f, 0.0f, 2.6f);
+    const Rays rays(model, eye);
+    const ModelRayCaster caster(model, glm::dmat4(1.0));
+    const double strength = 0.8, texel = 128.0 / 255.0;
+    for (const auto& [view, value] :
+         {std::pair{std::string("occlusion"), glm::dvec3(1.0 - strength + strength * texel)},
+          {"emissive", {0.9, 0.5, 0.2}},
+          {"base-color", {0.3, 0.6, 0.9}}}) {
+        fs::create_directories(dir / view);
+        const Image image = render07(dir / view, file, eye, {"--view", view});
+        int compared = 0, worst = 0;
+        for (int py = 0; py < kSize; py += 2) {
+            for (int px = 0; px < kSize; px += 2) {
+                const auto [origin, direction] = rays.at(px, py);
+                const auto hit = caster.hit(origin, direction);
+                if (!hit || hit->minBarycentric < 0.01) continue;
+                for (int c = 0; c < 3; ++c) {
+                    const int diff =
+                        std::abs(int(image.at(px, py, c)) - int(std::lround(255.0 * value[c])));
+                    worst = std::max(worst, diff);
+                    EXPECT_LE(diff, 2) << view << " pixel (" << px << ", " << py << ") channel "
+                                       << c << ": rendered " << int(image.at(px, py, c));
+                }
+                ++compared;
+            }
+        }
+        std::printf("--view %s: %d pixels of the square, worst channel difference %d/255\n",
+                    view.c_str(), compared, worst);
+        EXPECT_GT(compared, 3000) << view;
     }
 }
 

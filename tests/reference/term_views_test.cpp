@@ -21,6 +21,7 @@
 #include "files/image.h"
 #include "math/brdf.h"
 #include "reference/grid_scene.h"
+#include "reference/linear_sky.h"
 #include "reference/view_terms.h"
 #include "support/golden.h"
 
@@ -28,111 +29,6 @@ namespace pbr::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The environment of the image-based light's views: linear in the direction w, along another
-// axis in each channel (a swapped channel or a mirrored axis shows), and never far from 1:
-//   L(w) = a + b w (per channel), a = (0.6, 0.5, 0.45), b = (0.4 w.x, 0.3 w.y, -0.35 w.z).
-// Its convolutions have closed forms. The irradiance map holds the cosine-weighted mean of L over
-// the hemisphere around N (the irradiance over pi), and the cosine-weighted mean of w there is
-// (2/3) N. The prefiltered map's level for roughness r holds the mean of L over the GGX lobe
-// around R as the text weighs it (half vectors H drawn from D(H) NdotH, each L weighted by
-// NdotL, with N = V = R); the lobe is symmetric about R, so the mean of w is k(r) R (lobeMean).
-constexpr glm::dvec3 kSkyMean{0.6, 0.5, 0.45};
-glm::dvec3 skySlope(const glm::dvec3& w) {
-    return {0.4 * w.x, 0.3 * w.y, -0.35 * w.z};
-}
-glm::dvec3 sky(const glm::dvec3& w) {
-    return kSkyMean + skySlope(w);
-}
-
-// The environment as an equirectangular .hdr: column u = atan(w.z, w.x) / 2 pi + 1/2 and the top
-// row straight up, as LearnOpenGL's SampleSphericalMap reads it (with the image's rows top first).
-fs::path writeLinearSky(const fs::path& dir) {
-    constexpr int kW = 512, kH = 256;
-    HdrImage image{kW, kH, {}};
-    for (int y = 0; y < kH; ++y) {
-        for (int x = 0; x < kW; ++x) {
-            const double phi = ((x + 0.5) / kW - 0.5) * 2.0 * std::numbers::pi;
-            const double lat = (0.5 - (y + 0.5) / kH) * std::numbers::pi;
-            const glm::dvec3 w(std::cos(lat) * std::cos(phi), std::sin(lat),
-                               std::cos(lat) * std::sin(phi));
-            const glm::dvec3 L = sky(w);
-            image.pixels.insert(image.pixels.end(), {float(L.r), float(L.g), float(L.b)});
-        }
-    }
-    const fs::path path = dir / "linear_sky.hdr";
-    writeHdr(path, image);
-    return path;
-}
-
-// k(r): the mean of w.R over the lobe, by Simpson's rule in the half vector's angle t from R,
-// L at 2t from it:  k = integral of cos^2(2t) D(t) cos t sin t / integral of cos(2t) D(t) cos t
-// sin t, t from 0 to pi/4 (NdotL > 0), D = GGX with alpha = r^2.
-double lobeMean(double roughness) {
-    const double a2 = std::pow(roughness, 4.0);
-    constexpr int kSteps = 20000;
-    const double h = (std::numbers::pi / 4.0) / kSteps;
-    double top = 0.0, bottom = 0.0;
-    for (int i = 0; i <= kSteps; ++i) {
-        const double t = i * h, c = std::cos(t);
-        const double d = c * c * (a2 - 1.0) + 1.0;
-        const double weight = (i == 0 || i == kSteps ? 1.0 : (i % 2 ? 4.0 : 2.0)) * a2 /
-                              (std::numbers::pi * d * d) * c * std::sin(t) * std::cos(2.0 * t);
-        top += weight * std::cos(2.0 * t);
-        bottom += weight;
-    }
-    return top / bottom;
-}
-
-// The three reads of the split sum at a surface point, from the closed forms.
-struct SkyReads {
-    glm::dvec3 irradiance, prefiltered;
-    glm::dvec2 lut;
-};
-
-class LinearSkyReads {
-public:
-    LinearSkyReads() {
-        for (int level = 1; level <= 4; ++level) levelMean_[size_t(level)] = lobeMean(level / 4.0);
-    }
-
-    // `roughness` is one of the grid's columns' (its LUT row is kept in a table of NdotV); the
-    // LUT is read only `withLut` (04 has none).
-    SkyReads at(const glm::dvec3& N, const glm::dvec3& V, double roughness, bool withLut) {
-        SkyReads reads;
-        reads.irradiance = kSkyMean + skySlope(2.0 / 3.0 * N);
-        // The prefiltered map's five levels are roughness 0, 1/4, ... 1, read trilinearly at
-        // level 4 r; below level 1 the environment itself stands for level 0.
-        const glm::dvec3 R = glm::reflect(-V, N);
-        const double lod = roughness * 4.0;
-        const int below = std::min(int(lod), 3);
-        reads.prefiltered = kSkyMean + skySlope(R) * glm::mix(levelMean_[size_t(below)],
-                                                              levelMean_[size_t(below + 1)],
-                                                              lod - below);
-        if (withLut) reads.lut = lut(std::max(glm::dot(N, V), 0.0), roughness);
-        return reads;
-    }
-
-private:
-    // cpu::splitSumQuadrature at NdotV = 24/64, 25/64, ... 1 for each of the grid's roughnesses,
-    // linearly interpolated (the quadrature is smooth there: the interpolation errs by under
-    // 0.001) and computed once, when first asked for: each point takes milliseconds.
-    static glm::dvec2 lut(double NdotV, double roughness) {
-        static std::map<double, std::vector<glm::dvec2>> rows;
-        constexpr int kFirst = 24, kLast = 64;
-        if (NdotV < kFirst / 64.0) return cpu::splitSumQuadrature(NdotV, roughness);
-        std::vector<glm::dvec2>& row = rows[roughness];
-        if (row.empty()) {
-            for (int i = kFirst; i <= kLast; ++i)
-                row.push_back(cpu::splitSumQuadrature(i / 64.0, roughness));
-        }
-        const double x = NdotV * 64.0 - kFirst;
-        const int i = std::min(int(x), kLast - kFirst - 1);
-        return glm::mix(row[size_t(i)], row[size_t(i + 1)], x - i);
-    }
-
-    std::array<double, 5> levelMean_{1.0, 0.0, 0.0, 0.0, 0.0};  // level 0: the mirror
-};
 
 // What a grid sample draws with: its point lights, its image-based light (none in 01; the
 // irradiance alone in 04, the ambient light's diffuse part; the split sum in 05, in the text's
@@ -154,7 +50,7 @@ struct GridLighting {
 // cpu::splitSumAmbient); which term, which lights, which channel and which encoding each view
 // shows is this test's reading.
 glm::dvec3 gridView(const std::string& view, const cpu::SurfacePoint& s, const glm::vec3& camera,
-                    const GridLighting& lighting, LinearSkyReads& skyReads) {
+                    const GridLighting& lighting, const LinearSkyReads& skyReads) {
     const glm::vec3 N = s.normal, V = glm::normalize(camera - s.position);
     if (const auto input = inputView(view, s)) return *input;
     auto compress = [](const glm::dvec3& x) { return x / (1.0 + x); };

@@ -104,6 +104,21 @@ std::vector<GoldenCase> goldenCases() {
                          "07_gltf_metallic_roughness",
                          {"--tonemap", mapper, "--size", "480x270", "--camera", "0,2.2,5.5"}});
     }
+    // 07's views of the glTF material's inputs on the showcase, and 08's of the two workflows'
+    // halves (07's and 08's READMEs, "Term views").
+    for (const char* view : {"base-color", "metallic", "roughness", "occlusion", "emissive"}) {
+        std::string name = std::string("07_view_") + view;
+        std::replace(name.begin(), name.end(), '-', '_');
+        cases.push_back({name,
+                         "07_gltf_metallic_roughness",
+                         {"--view", view, "--size", "480x270", "--camera", "0,2.2,5.5"}});
+    }
+    for (const char* view : {"f0", "roughness"}) {
+        cases.push_back({std::string("08_view_") + view,
+                         "08_gltf_specular_glossiness",
+                         {"--view", view, "--size", "480x270"},
+                         0.05});
+    }
     // Beside the default (07_tonemap_khronos_neutral, multiple scattering): single scattering,
     // where rough metals darken (07's README shows both).
     cases.push_back({"07_single_scattering",
