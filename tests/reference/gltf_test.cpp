@@ -576,6 +576,38 @@ TEST(Reference, Gltf08SpecularGlossinessSpheresMatchTheCpu) {
     EXPECT_EQ(check.compared.size(), 8u);
 }
 
+// 08's term views on its factor-only specular-glossiness spheres: the inputs after the
+// extension's conversion (base colour = the diffuse factor; f0 = the specular; roughness =
+// 1 - glossiness; metallic 0) and the sun's terms through 07's BRDF, against the CPU.
+TEST(Reference, Gltf08TermViewsMatchTheCpu) {
+    for (const std::string view : {"base-color", "metallic", "roughness", "f0", "d", "specular",
+                                   "diffuse", "direct"}) {
+        SCOPED_TRACE("--view " + view);
+        const SphereCheck check = compareSpheres(
+            testOutputDir("reference_08_views_" + view), "08_gltf_specular_glossiness",
+            modelDir() / "pbr_workflows_sg.gltf", "sg_",
+            [](const Model&, const Material& m, const glm::vec3& position,
+               const glm::vec3& normal) -> std::optional<cpu::GltfSurface> {
+                if (m.baseColorTexture.present() || m.specularGlossinessTexture.present())
+                    return std::nullopt;
+                cpu::GltfSurface surface = cpu::specularGlossinessSurface(
+                    position, normal, glm::vec3(m.baseColorFactor), m.specularFactor,
+                    m.glossinessFactor);
+                surface.metalColor = glm::vec3(m.baseColorFactor);  // what base-color shows
+                return surface;
+            },
+            {"--view", view},
+            [&](const cpu::GltfSurface& s, const glm::vec3& eye,
+                std::span<const PunctualLight> lights) -> std::optional<glm::vec3> {
+                return gltfPunctualView(view, s, eye, lights);
+            });
+        std::printf("08 --view %s: %d pixels compared, worst channel difference %d/255\n",
+                    view.c_str(), check.total, check.worst);
+        EXPECT_GT(check.total, 3000);
+        EXPECT_EQ(check.compared.size(), 8u);
+    }
+}
+
 // Where both workflows can say the same material, they draw the same: 08's two halves, each in
 // a file of its own at the same place, under the same camera, agree within 1/255 at every pixel,
 // with all the light (IBL and the file's sun) and with the sun alone (where the dark background
