@@ -68,9 +68,16 @@ function launchChromium(chromium, dir) {
     }
     return result ? result.value : undefined;
   }
+  // The browser's helper processes can still be writing to the profile for a moment after the
+  // kill (seen: ENOTEMPTY on its Default folder, failing a run whose pictures were all written):
+  // the removal retries, and a profile that still will not go is left behind, said, not fatal.
   function close() {
     browser.kill("SIGKILL");
-    fs.rmSync(profile, { recursive: true, force: true });
+    try {
+      fs.rmSync(profile, { recursive: true, force: true, maxRetries: 20, retryDelay: 50 });
+    } catch (e) {
+      process.stderr.write(`chromium_pipe.js: left ${profile} behind: ${e.message}\n`);
+    }
   }
   return {
     send, open, evaluate, close, stderr: () => browserErr,
