@@ -48,6 +48,12 @@ FlagSpec viewFlag(std::span<const View> views) {
                             "(default final: the picture; see README.md, \"Term views\")");
 }
 
+std::vector<View> allViews() {
+    std::vector<View> views;
+    for (const Named& named : kNames) views.push_back(named.view);
+    return views;
+}
+
 View viewNamed(std::string_view name) {
     for (const Named& named : kNames) {
         if (named.name == name) return named.view;

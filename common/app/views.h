@@ -59,14 +59,6 @@ inline constexpr View kGltfViews[] = {
     View::Diffuse,     View::NdotL,       View::Direct,         View::Irradiance,
     View::Prefiltered, View::Lut,         View::AmbientDiffuse, View::AmbientSpecular,
     View::Ambient};
-// Every view, in the order of their numbers (the unit test's list).
-inline constexpr View kAllViews[] = {
-    View::Final,      View::Albedo,         View::Normal,          View::Metallic,
-    View::Roughness,  View::Ao,             View::F0,              View::D,
-    View::G,          View::F,              View::Specular,        View::Diffuse,
-    View::NdotL,      View::Direct,         View::Irradiance,      View::Prefiltered,
-    View::Lut,        View::AmbientDiffuse, View::AmbientSpecular, View::Ambient,
-    View::BaseColor,  View::Occlusion,      View::Emissive};
 // Every view the direct-light samples have, in the order --help lists them.
 inline constexpr View kDirectLightViews[] = {
     View::Final, View::Albedo, View::Normal,   View::Metallic, View::Roughness,
@@ -99,6 +91,8 @@ std::string_view viewName(View view);
 std::string viewConstant(View view);
 // --view NAME, a choice of `views` (the first is the default).
 FlagSpec viewFlag(std::span<const View> views);
+// Every view there is, in the order of their numbers.
+std::vector<View> allViews();
 // The view a --view word names (one viewFlag accepted).
 View viewNamed(std::string_view name);
 // What the sample's shaders are built with: nothing for the picture, TERM_VIEWS for a view.

@@ -441,6 +441,23 @@ glm::vec3 gltfPunctualView(const std::string& view, const cpu::GltfSurface& s,
     return encodedAs(sum / (1.0 + sum));
 }
 
+// gltfPunctualView as compareSpheres shades with it.
+ShadeSurface punctualViewShade(const std::string& view) {
+    return [view](const cpu::GltfSurface& s, const glm::vec3& eye,
+                  std::span<const PunctualLight> lights) -> std::optional<glm::vec3> {
+        return gltfPunctualView(view, s, eye, lights);
+    };
+}
+
+// Prints a view's comparison and checks it saw enough pixels on every one of `spheres` spheres.
+void expectViewCompared(const std::string& label, const SphereCheck& check, int minPixels,
+                        size_t spheres) {
+    std::printf("%s: %d pixels compared, worst channel difference %d/255\n", label.c_str(),
+                check.total, check.worst);
+    EXPECT_GT(check.total, minPixels) << label;
+    EXPECT_EQ(check.compared.size(), spheres) << label;
+}
+
 // 07's term views of the inputs and of the punctual lights on the showcase's ten spheres (image-
 // based light off, no tone mapping), every other pixel against the CPU, within 2/255.
 TEST(Reference, Gltf07TermViewsMatchTheCpu) {
@@ -450,14 +467,8 @@ TEST(Reference, Gltf07TermViewsMatchTheCpu) {
         SCOPED_TRACE("--view " + view);
         const SphereCheck check = compareShowcaseSpheres(
             "view_" + view, solidTexture, {"--view", view},
-            [&](const cpu::GltfSurface& s, const glm::vec3& eye,
-                std::span<const PunctualLight> lights) -> std::optional<glm::vec3> {
-                return gltfPunctualView(view, s, eye, lights);
-            });
-        std::printf("--view %s: %d pixels compared, worst channel difference %d/255\n",
-                    view.c_str(), check.total, check.worst);
-        EXPECT_GT(check.total, 1500);
-        EXPECT_EQ(check.compared.size(), 10u);
+            punctualViewShade(view));
+        expectViewCompared("--view " + view, check, 1500, 10);
     }
 }
 
@@ -498,10 +509,7 @@ TEST(Reference, Gltf07IblTermViewsMatchTheCpu) {
                                   0.0f, 1.0f);  // ambient, and the picture: nothing else lights it
             },
             true);
-        std::printf("--view %s: %d pixels compared, worst channel difference %d/255\n",
-                    view.c_str(), check.total, check.worst);
-        EXPECT_GT(check.total, 1500);
-        EXPECT_EQ(check.compared.size(), 10u);
+        expectViewCompared("--view " + view, check, 1500, 10);
     }
 }
 
@@ -597,14 +605,8 @@ TEST(Reference, Gltf08TermViewsMatchTheCpu) {
                 return surface;
             },
             {"--view", view},
-            [&](const cpu::GltfSurface& s, const glm::vec3& eye,
-                std::span<const PunctualLight> lights) -> std::optional<glm::vec3> {
-                return gltfPunctualView(view, s, eye, lights);
-            });
-        std::printf("08 --view %s: %d pixels compared, worst channel difference %d/255\n",
-                    view.c_str(), check.total, check.worst);
-        EXPECT_GT(check.total, 3000);
-        EXPECT_EQ(check.compared.size(), 8u);
+            punctualViewShade(view));
+        expectViewCompared("08 --view " + view, check, 3000, 8);
     }
 }
 

@@ -35,7 +35,7 @@ TEST(Views, GlslConstantsAreTheViewNumbers) {
     const std::map<std::string, int> glsl = glslViewConstants();
     ASSERT_FALSE(glsl.empty()) << "no VIEW_ constant in views.glsl";
     std::set<std::string> seen;
-    for (View view : kAllViews) {
+    for (View view : allViews()) {
         const std::string constant = viewConstant(view);
         ASSERT_TRUE(glsl.count(constant)) << constant << " is not in views.glsl";
         EXPECT_EQ(glsl.at(constant), int(view)) << constant;
@@ -48,7 +48,7 @@ TEST(Views, GlslConstantsAreTheViewNumbers) {
 
 TEST(Views, NamesGoBothWays) {
     std::set<std::string> names;
-    for (View view : kAllViews) {
+    for (View view : allViews()) {
         const std::string name(viewName(view));
         EXPECT_TRUE(names.insert(name).second) << name << " twice";
         EXPECT_EQ(viewNamed(name), view) << name;
