@@ -42,6 +42,29 @@ std::vector<std::string> goldenBackends() {
     return backends;
 }
 
+// The cases drawn here. Under the sanitizers, a case whose flags differ from an earlier case's of
+// the same sample only in the value of --view, --tonemap or --only is left to the Release build:
+// those values choose shader inputs (a uniform, a define), not C++, so the first of each such
+// family runs every line of ours the rest would (01_view_d stands for 01's other views).
+std::vector<GoldenCase> drawnGoldenCases() {
+    std::vector<GoldenCase> cases = goldenCases();
+#ifdef PBR_SANITIZED
+    std::set<std::string> families;
+    std::erase_if(cases, [&](const GoldenCase& golden) {
+        std::string family = golden.sample;
+        for (size_t i = 0; i < golden.args.size(); ++i) {
+            const std::string& arg = golden.args[i];
+            const bool shaderInput =
+                i > 0 && (golden.args[i - 1] == "--view" || golden.args[i - 1] == "--tonemap" ||
+                          golden.args[i - 1] == "--only");
+            family += " " + (shaderInput ? std::string("*") : arg);
+        }
+        return !families.insert(family).second;
+    });
+#endif
+    return cases;
+}
+
 class GoldenImage : public ::testing::TestWithParam<std::tuple<GoldenCase, std::string>> {};
 
 TEST_P(GoldenImage, MatchesGolden) {
@@ -81,7 +104,7 @@ TEST_P(GoldenImage, MatchesGolden) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, GoldenImage,
-                         ::testing::Combine(::testing::ValuesIn(goldenCases()),
+                         ::testing::Combine(::testing::ValuesIn(drawnGoldenCases()),
                                             ::testing::ValuesIn(goldenBackends())),
                          [](const auto& info) {
                              return std::get<0>(info.param).golden + "_" +
