@@ -40,7 +40,7 @@ repo_dir="$(cd "$(dirname "$0")" && pwd)"
 cd "$repo_dir"
 
 PACKAGES=(cmake g++ make pkg-config libglfw3-dev python3-glad libglm-dev libstb-dev
-          libassimp-dev libegl-dev libegl-mesa0 libgtest-dev assimp-testmodels)
+          libassimp-dev libegl-dev libegl-mesa0 libgtest-dev assimp-testmodels libimgui-dev)
 # OSMesa is gone from Mesa 25.1 on; where the distribution still has it, it is the first
 # headless backend (always software, so it matches the goldens). EGL does without it.
 OPTIONAL_PACKAGES=(libosmesa6-dev)

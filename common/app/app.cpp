@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "base/error.h"
 #include "base/output.h"
@@ -45,13 +48,38 @@ std::string jsonEscape(const std::string& text) {
     return out;
 }
 
+// PBR_PANEL_SCRIPT: the mouse over the picture, a frame a line: "x y button" (framebuffer pixels
+// from the top-left, the left button 0 or 1), or "-" for a frame without the mouse. Frames past
+// the last line have none. The tests drive the panel headless with it.
+std::vector<InputFrame> readPanelScript(const fs::path& path) {
+    std::ifstream in(path);
+    if (!in) throw Error(path.string() + ": cannot read the panel script (PBR_PANEL_SCRIPT)");
+    std::vector<InputFrame> frames;
+    std::string line;
+    while (std::getline(in, line)) {
+        InputFrame frame;
+        if (line != "-") {
+            std::istringstream fields(line);
+            int button = 0;
+            std::string rest;
+            if (!(fields >> frame.cursor.x >> frame.cursor.y >> button) || (fields >> rest) ||
+                (button != 0 && button != 1)) {
+                throw Error(path.string() + ":" + std::to_string(frames.size() + 1) + ": '" +
+                            line + "' is not 'x y button' (button 0 or 1) or '-'");
+            }
+            frame.leftButton = button == 1;
+        }
+        frames.push_back(frame);
+    }
+    return frames;
+}
+
 }  // namespace
 
 App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (config_.title.empty()) config_.title = config_.name;
-    usage_ =
-        usageText(argc > 0 ? fs::path(argv[0]).filename().string() : config_.name, config_.flags,
-                  config_.orbitCamera);
+    program_ = argc > 0 ? fs::path(argv[0]).filename().string() : config_.name;
+    usage_ = usageText(program_, config_.flags, config_.orbitCamera);
     std::vector<std::string> args(argv + std::min(argc, 1), argv + argc);
     try {
         options_ = parseOptions(args, config_.flags);
@@ -130,7 +158,25 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
         framesWanted_ = headless() ? 1 : 0;
     }
     if (options_.benchmark) context_->setVsync(false);
+
+    // The live panel: in a window (hidden at first for --benchmark, whose frames are the
+    // sample's), with --panel, and when a script drives it.
+    const char* script = std::getenv("PBR_PANEL_SCRIPT");
+    scripted_ = script && *script;
+    if (scripted_) script_ = readPanelScript(script);
+    if (Panel::available() && (context_->windowed() || options_.panel || scripted_)) {
+        panel_ = std::make_unique<Panel>(config_.flags, [this](const std::string& text) {
+            context_->setClipboard(text);
+            if (!context_->windowed()) std::printf("%s: copied: %s\n", config_.name.c_str(), text.c_str());
+        });
+        panelShown_ = !(context_->windowed() && options_.benchmark);
+    }
+    if (context_->windowed() && !config_.orbitCamera) context_->setCursorCaptured(mouseLook());
     checkGlErrors("start-up");
+}
+
+bool App::mouseLook() const {
+    return !(panel_ && panelShown_);
 }
 
 void App::useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
@@ -150,6 +196,7 @@ void App::useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax)
 App::~App() {
     // An App is the run: ending by an exception is a failure (exit code 1), else a success.
     web::exitWithAfterMain(std::uncaught_exceptions() > 0 ? 1 : 0);
+    panel_.reset();
     shaders_.clear();
     target_.reset();
     // Everything a sample made was declared after the App and is gone by now: whatever GL still
@@ -184,26 +231,34 @@ std::string App::flagChoice(const std::string& name) const {
     return flag(name).value_or(spec.choices.front());
 }
 
-int App::flagInt(const std::string& name, int fallback) const {
+int App::flagInt(const std::string& name) const {
     const FlagSpec& spec = sampleFlag(name);
-    const auto value = flag(name);
-    return value ? parseIntFlag(name, *value, int(spec.min), int(spec.max)) : fallback;
+    if (spec.kind != FlagSpec::Kind::Integer) throw Error(name + " is not a whole-number flag");
+    return parseIntFlag(name, flag(name).value_or(spec.defaultValue), int(spec.min), int(spec.max));
 }
 
-float App::flagNumber(const std::string& name, float fallback) const {
+float App::flagNumber(const std::string& name) const {
     const FlagSpec& spec = sampleFlag(name);
-    const auto value = flag(name);
-    return value ? float(parseNumberFlag(name, *value, spec.min, spec.max)) : fallback;
+    if (spec.kind != FlagSpec::Kind::Number) throw Error(name + " is not a number flag");
+    return float(parseNumberFlag(name, flag(name).value_or(spec.defaultValue), spec.min, spec.max));
 }
 
 std::optional<std::vector<float>> App::flagNumbers(const std::string& name) const {
     const FlagSpec& spec = sampleFlag(name);
     if (spec.kind != FlagSpec::Kind::Numbers) throw Error(name + " is not a list of numbers");
     const auto value = flag(name);
-    if (!value) return std::nullopt;
+    if (!value && spec.defaultValue.empty()) return std::nullopt;
     std::vector<float> numbers;
-    for (const double n : parseNumbersFlag(spec, *value)) numbers.push_back(float(n));
+    for (const double n : parseNumbersFlag(spec, value.value_or(spec.defaultValue))) {
+        numbers.push_back(float(n));
+    }
     return numbers;
+}
+
+glm::vec3 App::flagVec3(const std::string& name) const {
+    const auto numbers = flagNumbers(name);
+    if (!numbers || numbers->size() != 3) throw Error(name + " is not three numbers with a default");
+    return {(*numbers)[0], (*numbers)[1], (*numbers)[2]};
 }
 
 void App::addOutputFile(fs::path path, std::string bytes) {
@@ -212,7 +267,48 @@ void App::addOutputFile(fs::path path, std::string bytes) {
 
 Shader& App::shader(const std::string& vertex, const std::string& fragment,
                     std::vector<std::string> defines) {
-    return shaders_.emplace_back(vertex, fragment, std::move(defines));
+    std::string key = vertex + '\n' + fragment;
+    for (const std::string& define : defines) key += '\n' + define;
+    for (size_t i = 0; i < shaderKeys_.size(); ++i) {
+        if (shaderKeys_[i] == key) return shaders_[i];
+    }
+    Shader& made = shaders_.emplace_back(vertex, fragment, std::move(defines));
+    shaderKeys_.push_back(std::move(key));
+    return made;
+}
+
+std::string App::commandLine() const {
+    // A value with characters a shell would take apart is quoted.
+    auto quoted = [](const std::string& text) {
+        const bool plain = !text.empty() && text.find_first_not_of(
+                                                "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                                "0123456789-_.,/+=:") == std::string::npos;
+        if (plain) return text;
+        std::string out = "'";
+        for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return out + "'";
+    };
+    std::string line = program_ + " --size " + std::to_string(width()) + "x" +
+                       std::to_string(height());
+    const glm::vec3 eye = cameraPosition();
+    line += " --camera " + flagNumberText(eye.x) + "," + flagNumberText(eye.y) + "," +
+            flagNumberText(eye.z);
+    if (!orbit_ && !config_.orbitCamera) {
+        line += "," + flagNumberText(camera_.yaw()) + "," + flagNumberText(camera_.pitch());
+    }
+    if (paused_) {
+        line += " --time " + flagNumberText(pausedTime_);
+    } else if (options_.time) {
+        line += " --time " + flagNumberText(*options_.time);
+    }
+    if (options_.msaa != 4) line += " --msaa " + std::to_string(options_.msaa);
+    for (const FlagSpec& spec : config_.flags) {
+        const auto value = flag(spec.name);
+        if (!value) continue;
+        line += " " + spec.name;
+        if (spec.kind != FlagSpec::Kind::Switch) line += " " + quoted(*value);
+    }
+    return line;
 }
 
 void App::bindRenderTarget() const {
@@ -234,6 +330,26 @@ bool App::nextFrame() {
         return false;
     }
     ++frameIndex_;
+    if (scripted_) {
+        // The script's mouse, and what a window would make of it: the move since the last
+        // frame (y up), and the part of it made with the button held.
+        const auto scriptedAt = [this](int frame) {
+            return frame >= 0 && size_t(frame) < script_.size() ? script_[size_t(frame)]
+                                                                : InputFrame{};
+        };
+        const InputFrame scripted = scriptedAt(frameIndex_), before = scriptedAt(frameIndex_ - 1);
+        input.cursor = scripted.cursor;
+        input.leftButton = scripted.leftButton;
+        if (scripted.cursor.x >= 0.0f && before.cursor.x >= 0.0f) {
+            input.mouseDelta = {scripted.cursor.x - before.cursor.x,
+                                before.cursor.y - scripted.cursor.y};
+            if (scripted.leftButton) input.dragDelta = input.mouseDelta;
+        }
+    }
+    if (input.togglePanel && panel_) {
+        panelShown_ = !panelShown_;
+        if (context_->windowed() && !config_.orbitCamera) context_->setCursorCaptured(mouseLook());
+    }
 
     const double now = context_->seconds();
     if (frameIndex_ == 0) {
@@ -242,11 +358,21 @@ bool App::nextFrame() {
     }
     deltaTime_ = frameIndex_ == 0 ? 0.0f : float(now - lastSeconds_);
     lastSeconds_ = now;
-    if (options_.time) {
+    // The panel first: a control moved by this frame's input changes what this frame draws.
+    updatePanel(input);
+    if (paused_) {
+        time_ = pausedTime_;
+    } else if (options_.time) {
         time_ = float(*options_.time);
     } else {
         time_ = headless() ? 0.0f : float(now - startSeconds_);
     }
+    if (panelHasMouse_) {
+        // The mouse works the panel: it neither turns nor moves the camera.
+        input.mouseDelta = input.dragDelta = glm::vec2(0.0f);
+        input.scroll = 0.0f;
+    }
+    if (!mouseLook()) input.mouseDelta = input.dragDelta;  // a free cursor looks by dragging
 
     if (orbit_) {
         // Left drag orbits, scroll dollies; the cursor is free (AppConfig::orbitCamera).
@@ -288,8 +414,48 @@ bool App::nextFrame() {
     return true;
 }
 
+void App::updatePanel(const InputFrame& input) {
+    panelHasMouse_ = false;
+    if (!panel_ || !panelShown_) return;
+    PanelStatus status{.title = config_.title,
+                       .commandLine = commandLine(),
+                       .frameMilliseconds = headless() ? -1.0 : shownFrameMilliseconds_,
+                       .paused = paused_};
+    // Headless (a script, --panel) the panel's clock is a steady 60 frames a second.
+    const float delta = headless() || deltaTime_ <= 0.0f ? 1.0f / 60.0f : deltaTime_;
+    panel_->update({.cursor = input.cursor,
+                    .leftButton = input.leftButton,
+                    .scroll = input.scroll,
+                    .deltaSeconds = delta},
+                   {width(), height()}, options_.sampleFlags, status);
+    panelHasMouse_ = panel_->wantsMouse();
+    if (status.pauseClicked) {
+        if (paused_) {
+            // Time runs on from where it stood.
+            startSeconds_ = context_->seconds() - double(pausedTime_);
+        } else {
+            pausedTime_ = time_;
+        }
+        paused_ = !paused_;
+    }
+    if (status.stepClicked && paused_) pausedTime_ += 1.0f / 60.0f;
+    if (deltaTime_ > 0.0f) {
+        // What the panel says a frame takes: smoothed, so that it can be read.
+        const double ms = double(deltaTime_) * 1000.0;
+        shownFrameMilliseconds_ =
+            shownFrameMilliseconds_ <= 0.0 ? ms : 0.9 * shownFrameMilliseconds_ + 0.1 * ms;
+    }
+}
+
 void App::endFrame() {
+    // --panel: the panel is part of the picture; in a window it is drawn over the picture shown,
+    // and F12 writes what a headless run writes.
+    const bool panelInPicture = panel_ && panelShown_ && options_.panel;
     target_->resolve();
+    if (panelInPicture) {
+        target_->bindResolved();
+        panel_->draw();
+    }
     if (screenshotCount_ > 0 && context_->windowed()) {
         writeScreenshot("screenshot-" + config_.name + "-" + std::to_string(frameIndex_) + ".png");
         screenshotCount_ = 0;
@@ -297,6 +463,11 @@ void App::endFrame() {
     if (context_->windowed()) {
         const glm::ivec2 size = context_->framebufferSize();
         target_->blitToDefault(size.x, size.y);
+        if (panel_ && panelShown_ && !panelInPicture) {
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            glViewport(0, 0, size.x, size.y);
+            panel_->draw();
+        }
         context_->swapBuffers();
     }
     if (options_.benchmark) {
@@ -364,6 +535,16 @@ void App::finish() {
     for (auto& [path, bytes] : outputFiles_) batch.add(path, std::move(bytes));
     outputFiles_.clear();
     batch.commit();
+    if (scripted_) {
+        // For the test that drove the panel: where its controls were, and what is on screen.
+        if (panel_) {
+            std::istringstream layout(panel_->layout());
+            for (std::string line; std::getline(layout, line);) {
+                std::printf("%s: panel: %s\n", config_.name.c_str(), line.c_str());
+            }
+        }
+        std::printf("%s: command: %s\n", config_.name.c_str(), commandLine().c_str());
+    }
     for (const fs::path& path : batch.paths()) web::handOver(path);
     if (!picture.empty()) {
         std::printf("%s: wrote %s (%s)\n", config_.name.c_str(),

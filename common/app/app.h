@@ -21,6 +21,7 @@
 #include <glm/glm.hpp>
 
 #include "app/options.h"
+#include "app/panel.h"
 #include "context/context.h"
 #include "gl/framebuffer.h"
 #include "gl/shader.h"
@@ -62,12 +63,14 @@ public:
     // FlagSpec when the App was made).
     std::optional<std::string> flag(const std::string& name) const;
     // A sample flag's value converted: a Choice flag's word (its first choice when not given),
-    // an Integer or Number flag's value, or `fallback` when not given.
+    // an Integer or Number flag's value (its FlagSpec's default when not given).
     std::string flagChoice(const std::string& name) const;
-    int flagInt(const std::string& name, int fallback) const;
-    float flagNumber(const std::string& name, float fallback) const;
-    // A Numbers flag's values (its FlagSpec's count of them), when given.
+    int flagInt(const std::string& name) const;
+    float flagNumber(const std::string& name) const;
+    // A Numbers flag's values (its FlagSpec's count of them), when given or when it has a
+    // default; a flag of three numbers with a default as a vector.
     std::optional<std::vector<float>> flagNumbers(const std::string& name) const;
+    glm::vec3 flagVec3(const std::string& name) const;
 
     // A file to write together with the picture at the end of the run: the picture (when one is
     // written) and every such file appear together, or none does (see output.h).
@@ -97,9 +100,15 @@ public:
     Frustum frustum() const { return Frustum(projection() * view()); }
 
     // A program from shaders/<vertex> and shaders/<fragment>, owned by the App so that R can
-    // reload it. The reference stays valid for the App's life.
+    // reload it. The reference stays valid for the App's life. Asked again for the same files and
+    // defines (a sample that picks its program every frame, by a live flag), it is the same one.
     Shader& shader(const std::string& vertex, const std::string& fragment,
                    std::vector<std::string> defines = {});
+
+    // The command that draws what is on screen now: the program, the size, the camera, the time
+    // when it is paused or fixed, and the sample's flags as they stand (the panel's changes
+    // included). The panel shows it; a scripted run prints it.
+    std::string commandLine() const;
 
     // Rebinds the frame's render target (after drawing into a framebuffer of your own).
     void bindRenderTarget() const;
@@ -122,7 +131,10 @@ private:
     void installDebugOutput();
     void checkGlErrors(const char* where);
     void writeScreenshot(const std::string& path);
+    void updatePanel(const InputFrame& input);
+    bool mouseLook() const;  // the fly camera looks with the captured cursor (no panel shown)
     std::string frameDescription() const;
+    std::string program_;  // the executable's name, for commandLine
     const FlagSpec& sampleFlag(const std::string& name) const;
 
     AppConfig config_;
@@ -131,6 +143,15 @@ private:
     std::unique_ptr<Context> context_;  // first member: destroyed last
     std::unique_ptr<RenderTarget> target_;
     std::deque<Shader> shaders_;
+    std::vector<std::string> shaderKeys_;  // shaders_[i]'s files and defines
+    std::unique_ptr<Panel> panel_;  // made when the build has Dear ImGui and a panel is wanted
+    bool panelShown_ = false;
+    bool panelHasMouse_ = false;  // this frame's mouse is the panel's, not the camera's
+    bool scripted_ = false;
+    std::vector<InputFrame> script_;  // PBR_PANEL_SCRIPT: the mouse of each frame, headless
+    double shownFrameMilliseconds_ = 0.0;
+    bool paused_ = false;
+    float pausedTime_ = 0.0f;
     FlyCamera camera_;
     std::optional<OrbitCamera> orbit_;
 

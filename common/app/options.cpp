@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <type_traits>
@@ -39,6 +40,9 @@ constexpr CommonFlag kCommonFlags[] = {
     {"--camera", "x,y,z[,yaw,pitch]",
      "camera start position, and yaw/pitch in degrees (default yaw -90, pitch 0)"},
     {"--benchmark", nullptr, "time the frames and print one JSON line of statistics"},
+    {"--panel", nullptr,
+     "draw the live panel into the picture too, headless as well (a window always shows it; "
+     "Tab hides it)"},
     {"--backend", "osmesa|egl|egl-software",
      "offscreen backend (implies --headless; default: the first that works of osmesa, egl); "
      "egl may pick a GPU, egl-software never does"},
@@ -176,48 +180,91 @@ void parseSize(const std::string& value, Options& options) {
 }  // namespace
 
 FlagSpec FlagSpec::toggle(std::string name, std::string help) {
-    return {std::move(name), "", std::move(help), Kind::Switch, 0.0, 0.0, 0, {}};
+    return {.name = std::move(name), .help = std::move(help), .kind = Kind::Switch};
 }
 
 FlagSpec FlagSpec::text(std::string name, std::string valueName, std::string help) {
-    return {std::move(name), std::move(valueName), std::move(help), Kind::Text, 0.0, 0.0, 0, {}};
+    return {.name = std::move(name),
+            .valueName = std::move(valueName),
+            .help = std::move(help),
+            .kind = Kind::Text};
 }
 
 FlagSpec FlagSpec::outputFolder(std::string name, std::string valueName, std::string help) {
-    return {
-        std::move(name), std::move(valueName), std::move(help), Kind::OutputFolder, 0.0, 0.0, 0, {}};
+    return {.name = std::move(name),
+            .valueName = std::move(valueName),
+            .help = std::move(help),
+            .kind = Kind::OutputFolder};
 }
 
 FlagSpec FlagSpec::integer(std::string name, std::string valueName, std::string help, int min,
-                           int max) {
-    return {std::move(name),
-            std::move(valueName),
-            std::move(help),
-            Kind::Integer,
-            double(min),
-            double(max),
-            0,
-            {}};
+                           int max, int defaultValue) {
+    return {.name = std::move(name),
+            .valueName = std::move(valueName),
+            .help = std::move(help),
+            .kind = Kind::Integer,
+            .min = double(min),
+            .max = double(max),
+            .defaultValue = std::to_string(defaultValue)};
 }
 
 FlagSpec FlagSpec::number(std::string name, std::string valueName, std::string help, double min,
-                          double max) {
-    return {std::move(name), std::move(valueName), std::move(help), Kind::Number, min, max, 0, {}};
+                          double max, double defaultValue) {
+    return {.name = std::move(name),
+            .valueName = std::move(valueName),
+            .help = std::move(help),
+            .kind = Kind::Number,
+            .min = min,
+            .max = max,
+            .defaultValue = flagNumberText(defaultValue)};
 }
 
 FlagSpec FlagSpec::numbers(std::string name, std::string valueName, std::string help, int count,
-                           double min, double max) {
-    FlagSpec spec{std::move(name), std::move(valueName), std::move(help), Kind::Numbers, min, max, 0, {}};
-    spec.count = count;
-    return spec;
+                           double min, double max, std::vector<double> defaults) {
+    std::string defaultText;
+    for (const double value : defaults) {
+        defaultText += (defaultText.empty() ? "" : ",") + flagNumberText(value);
+    }
+    return {.name = std::move(name),
+            .valueName = std::move(valueName),
+            .help = std::move(help),
+            .kind = Kind::Numbers,
+            .min = min,
+            .max = max,
+            .count = count,
+            .defaultValue = std::move(defaultText)};
 }
 
 FlagSpec FlagSpec::choice(std::string name, std::vector<std::string> choices, std::string help) {
     std::string valueName;
     for (const std::string& choice : choices) valueName += (valueName.empty() ? "" : "|") + choice;
-    return {std::move(name), std::move(valueName), std::move(help), Kind::Choice, 0.0, 0.0, 0,
-            std::move(choices)};
+    return {.name = std::move(name),
+            .valueName = std::move(valueName),
+            .help = std::move(help),
+            .kind = Kind::Choice,
+            .choices = std::move(choices)};
 }
+
+FlagSpec FlagSpec::asLive() const {
+    FlagSpec spec = *this;
+    spec.live = true;
+    return spec;
+}
+
+std::string flagNumberText(double value) {
+    // The shortest of %.1g ... %.17g that parses back to the very same double, with at least
+    // the digits of its whole part, so that -90 stays -90 (not -9e+01).
+    const double magnitude = std::abs(value);
+    const int wholeDigits =
+        magnitude >= 1.0 && magnitude < 1e17 ? int(std::floor(std::log10(magnitude))) + 1 : 1;
+    char text[32];
+    for (int digits = 1; digits <= 17; ++digits) {
+        std::snprintf(text, sizeof text, "%.*g", std::max(digits, wholeDigits), value);
+        if (std::strtod(text, nullptr) == value) break;
+    }
+    return text;
+}
+
 
 int parseIntFlag(const std::string& flag, const std::string& value, int min, int max) {
     long long number = 0;
@@ -295,6 +342,8 @@ Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec
             options.help = true;
         } else if (flag == "--headless") {
             options.headless = true;
+        } else if (flag == "--panel") {
+            options.panel = true;
         } else if (flag == "--benchmark") {
             options.benchmark = true;
         } else if (flag == "--output") {
@@ -376,8 +425,9 @@ std::string usageText(const std::string& program, std::span<const FlagSpec> samp
     if (!sampleFlags.empty()) {
         out << "\nflags of " << program << ":\n";
         for (const FlagSpec& flag : sampleFlags) {
+            const bool saysDefault = !flag.defaultValue.empty() && flag.kind != FlagSpec::Kind::Choice;
             usageLine(out, flag.name + (flag.valueName.empty() ? "" : " " + flag.valueName),
-                      flag.help);
+                      flag.help + (saysDefault ? " (default " + flag.defaultValue + ")" : ""));
         }
     }
     out << "\nenvironment:\n";
@@ -386,11 +436,12 @@ std::string usageText(const std::string& program, std::span<const FlagSpec> samp
     }
     if (orbitCamera) {
         out << "\nthis sample's camera orbits the model's centre: --camera takes x,y,z only\n"
-               "keys in a window: drag (left button) orbit, scroll dolly, F12 screenshot, R "
-               "reload shaders, Esc quit\n";
+               "keys in a window: drag (left button) orbit, scroll dolly, Tab hide or show the "
+               "panel,\n  F12 screenshot, R reload shaders, Esc quit\n";
     } else {
-        out << "\nkeys in a window: WASD move, mouse look, scroll zoom, F12 screenshot, R reload "
-               "shaders, Esc quit\n";
+        out << "\nkeys in a window: WASD move, drag (left button) look, scroll zoom, Tab hide or "
+               "show the\n  panel (hidden: the mouse looks), F12 screenshot, R reload shaders, Esc "
+               "quit\n";
     }
     return out.str();
 }

@@ -13,29 +13,44 @@ namespace pbr {
 
 // A flag a sample adds, made with one of the functions below: "--lights N" (a whole number in a
 // range), "--filter trilinear|nearest" (one of some words), "--model FILE" (any text), a switch.
+// The one declaration of a parameter: it is the command-line flag, its line in --help, and its
+// control in the window's live panel (app/panel.h): a number a slider, an integer a stepper, a
+// choice a combo box, a switch a checkbox. A flag the sample reads every frame is `live` (see
+// asLive); the others are read once at start-up, and the panel shows them without a control.
 struct FlagSpec {
     enum class Kind { Switch, Text, OutputFolder, Integer, Number, Numbers, Choice };
-    std::string name;       // "--lights"
-    std::string valueName;  // "N", "FILE", "a|b"; empty for a switch
-    std::string help;
+    std::string name{};       // "--lights"
+    std::string valueName{};  // "N", "FILE", "a|b"; empty for a switch
+    std::string help{};
     Kind kind = Kind::Text;
     double min = 0.0, max = 0.0;       // Integer, Number(s): the allowed range, both ends included
     int count = 0;                     // Numbers: how many, comma-separated
-    std::vector<std::string> choices;  // Choice: the allowed words; the first is the default
+    std::vector<std::string> choices{};  // Choice: the allowed words; the first is the default
+    // The value when the flag is not given, as its text ("4", "0.5", "1,0.7,1.8"): Integer,
+    // Number and Numbers (where it is empty, the sample has no single default). --help says it.
+    std::string defaultValue{};
+    bool live = false;  // the sample reads it every frame: the panel may change it while it runs
 
     static FlagSpec toggle(std::string name, std::string help);
     static FlagSpec text(std::string name, std::string valueName, std::string help);
     // A folder the sample writes files into: it must exist (checked before rendering).
     static FlagSpec outputFolder(std::string name, std::string valueName, std::string help);
     static FlagSpec integer(std::string name, std::string valueName, std::string help, int min,
-                            int max);
+                            int max, int defaultValue);
     static FlagSpec number(std::string name, std::string valueName, std::string help, double min,
-                           double max);
-    // "--attenuation 1,0.7,1.8": exactly `count` numbers, each in [min, max].
+                           double max, double defaultValue);
+    // "--attenuation 1,0.7,1.8": exactly `count` numbers, each in [min, max]; `defaults` has
+    // `count` numbers, or none.
     static FlagSpec numbers(std::string name, std::string valueName, std::string help, int count,
-                            double min, double max);
+                            double min, double max, std::vector<double> defaults = {});
     static FlagSpec choice(std::string name, std::vector<std::string> choices, std::string help);
+
+    // The same flag, read by the sample every frame (so the panel's control for it is live).
+    FlagSpec asLive() const;
 };
+
+// A number as a flag's text: the shortest that reads back as the same double ("0.3", "1e-05").
+std::string flagNumberText(double value);
 
 // --camera x,y,z[,yaw,pitch]: a start pose for the fly camera (yaw/pitch in degrees).
 struct CameraStart {
@@ -47,6 +62,7 @@ struct Options {
     bool help = false;
     bool headless = false;
     bool benchmark = false;
+    bool panel = false;  // --panel: the live panel drawn into the picture, headless too
     std::string output;  // empty: "<sample>.png" in the working directory
     int width = 1280, height = 720;
     std::optional<int> frames;   // unset: 1 headless, until closed in a window, 30 for --benchmark

@@ -63,6 +63,9 @@ std::vector<EnvironmentVariable> environmentVariables() {
         {"DISPLAY, WAYLAND_DISPLAY",
          "a window needs one of them; without, the sample renders "
          "offscreen and says so"},
+        {"PBR_PANEL_SCRIPT",
+         "the tests' way to drive the live panel headless: a file of the mouse in each frame, "
+         "\"x y button\" or \"-\" a line"},
     };
 }
 

@@ -16,6 +16,9 @@ struct InputFrame {
     glm::vec2 mouseDelta{0.0f};  // pixels, y up
     glm::vec2 dragDelta{0.0f};   // the part of it made with the left mouse button held
     float scroll = 0.0f;
+    glm::vec2 cursor{-1.0f};  // framebuffer pixels from the top-left; negative: unknown
+    bool leftButton = false;  // held
+    bool togglePanel = false;  // Tab
     bool screenshot = false;  // F12
     bool reload = false;      // R
     bool quit = false;        // Esc or the window's close button
@@ -31,6 +34,9 @@ public:
     virtual void swapBuffers() {}
     virtual double seconds() const = 0;  // monotonic clock
     virtual void setVsync(bool) {}
+    // The fly camera's mouse look: a hidden cursor kept in the window, or a free one.
+    virtual void setCursorCaptured(bool) {}
+    virtual void setClipboard(const std::string&) {}
 };
 
 // The common part of the offscreen backends: a fixed size, no input, a steady clock.

@@ -30,7 +30,7 @@ public:
     GlfwContext(GLFWwindow* window, bool captureCursor, bool windowed = true)
         : window_(window), windowed_(windowed) {
         glfwSetWindowUserPointer(window_, this);
-        if (captureCursor) glfwSetInputMode(window_, GLFW_CURSOR, GLFW_CURSOR_DISABLED);
+        setCursorCaptured(captureCursor);
         glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
             static_cast<GlfwContext*>(glfwGetWindowUserPointer(w))->onCursor(x, y);
         });
@@ -42,6 +42,7 @@ public:
             InputFrame& pending = static_cast<GlfwContext*>(glfwGetWindowUserPointer(w))->pending_;
             if (key == GLFW_KEY_F12) pending.screenshot = true;
             if (key == GLFW_KEY_R) pending.reload = true;
+            if (key == GLFW_KEY_TAB) pending.togglePanel = true;
             if (key == GLFW_KEY_ESCAPE) pending.quit = true;
         });
     }
@@ -66,7 +67,29 @@ public:
         frame.left = glfwGetKey(window_, GLFW_KEY_A) == GLFW_PRESS;
         frame.right = glfwGetKey(window_, GLFW_KEY_D) == GLFW_PRESS;
         frame.quit = frame.quit || glfwWindowShouldClose(window_);
+        frame.leftButton = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        if (!captured_) {
+            // The cursor in framebuffer pixels (a window's coordinates may be scaled on HiDPI).
+            double x = 0.0, y = 0.0;
+            int windowWidth = 0, windowHeight = 0;
+            glfwGetCursorPos(window_, &x, &y);
+            glfwGetWindowSize(window_, &windowWidth, &windowHeight);
+            const glm::ivec2 framebuffer = framebufferSize();
+            if (windowWidth > 0 && windowHeight > 0 && x >= 0.0 && y >= 0.0) {
+                frame.cursor = {float(x) * float(framebuffer.x) / float(windowWidth),
+                                float(y) * float(framebuffer.y) / float(windowHeight)};
+            }
+        }
         return frame;
+    }
+    void setCursorCaptured(bool captured) override {
+        if (captured == captured_) return;
+        captured_ = captured;
+        glfwSetInputMode(window_, GLFW_CURSOR, captured ? GLFW_CURSOR_DISABLED : GLFW_CURSOR_NORMAL);
+        haveCursor_ = false;  // the next cursor event sets a new reference: the view does not jump
+    }
+    void setClipboard(const std::string& text) override {
+        glfwSetClipboardString(window_, text.c_str());
     }
     void swapBuffers() override {
         glfwSwapBuffers(window_);
@@ -95,6 +118,7 @@ private:
     GLFWwindow* window_;
     bool windowed_;
     InputFrame pending_;
+    bool captured_ = false;
     bool haveCursor_ = false;
     double lastX_ = 0.0, lastY_ = 0.0;
 };

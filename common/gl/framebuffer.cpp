@@ -86,6 +86,12 @@ void RenderTarget::resolve() const {
                       GL_NEAREST);
 }
 
+void RenderTarget::bindResolved() const {
+    if (srgb_) srgbEncoding(false);
+    glBindFramebuffer(GL_FRAMEBUFFER, resolved_.id());
+    glViewport(0, 0, width_, height_);
+}
+
 void RenderTarget::blitToDefault(int width, int height) const {
     if (srgb_) srgbEncoding(false);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());

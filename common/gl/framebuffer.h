@@ -20,6 +20,9 @@ public:
 
     void bind() const;     // the framebuffer to draw into, with the viewport set
     void resolve() const;  // multisampled -> single-sample (no-op without MSAA)
+    // The resolved picture to draw over (the live panel), its bytes as they are (no sRGB
+    // encoding), with the viewport set.
+    void bindResolved() const;
     void blitToDefault(int width, int height) const;  // the resolved picture to the window
     Image readPixels() const;                         // the resolved picture, RGB, top row first
 

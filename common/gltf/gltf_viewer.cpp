@@ -1,7 +1,10 @@
 #include "gltf/gltf_viewer.h"
 
 #include <cstdio>
+#include <map>
+#include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "app/app.h"
@@ -63,74 +66,72 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     flags.push_back(FlagSpec::text(
         "--model", "FILE",
         "a .gltf or .glb to draw (default: " + config.defaultModelDescription + ")"));
+    // The output and the parts of the light: read every frame (live in the window's panel).
     flags.push_back(FlagSpec::choice(
-        "--tonemap", cpu::toneMapperChoices(cpu::ToneMapper::KhronosNeutral),
-        "the tone mapper after exposure (default khronos-neutral: keeps base colours true up to "
-        "0.8, then rolls highlights off to white)"));
+                        "--tonemap", cpu::toneMapperChoices(cpu::ToneMapper::KhronosNeutral),
+                        "the tone mapper after exposure (default khronos-neutral: keeps base "
+                        "colours true up to 0.8, then rolls highlights off to white)")
+                        .asLive());
     flags.push_back(FlagSpec::number("--exposure", "FACTOR",
-                                     "a linear factor on the light before tone mapping "
-                                     "(default 1)",
-                                     1e-4, 1e4));
-    flags.push_back(FlagSpec::toggle("--no-ibl", "leave out the image-based light"));
-    flags.push_back(FlagSpec::toggle("--no-punctual", "leave out the file's punctual lights"));
-    flags.push_back(viewFlag(kGltfViews));
+                                     "a linear factor on the light before tone mapping", 1e-4, 1e4,
+                                     1.0)
+                        .asLive());
+    flags.push_back(FlagSpec::toggle("--no-ibl", "leave out the image-based light").asLive());
+    flags.push_back(
+        FlagSpec::toggle("--no-punctual", "leave out the file's punctual lights").asLive());
+    flags.push_back(viewFlag(kGltfViews).asLive());
     flags.push_back(FlagSpec::toggle("--single-scattering",
                                      "image-based light without the multiple-scattering energy "
-                                     "(rough metals darken, as in 05)"));
+                                     "(rough metals darken, as in 05)")
+                        .asLive());
     App app(argc, argv,
             {.name = config.name,
              .title = config.title,
              .flags = flags,
              .srgbTarget = true,  // linear out of the shaders, encoded by the GL
              .orbitCamera = true});
-    const bool ibl = !app.options().has("--no-ibl");
-    const bool punctual = !app.options().has("--no-punctual");
-    const int toneMapper = int(*cpu::toneMapperFromName(app.flagChoice("--tonemap")));
-    const float exposure = app.flagNumber("--exposure", 1.0f);
-
     const Model model = loadModel(app.flag("--model").value_or(config.defaultModel.string()));
     const GpuModel gpuModel(model);  // every texture read: a broken one ends the run here
-    describe(model, punctual);
+    describe(model, !app.options().has("--no-punctual"));
     app.useOrbitCamera(model.boundsMin, model.boundsMax);
-
-    const View view = viewNamed(app.flagChoice("--view"));
-    Shader& shader = app.shader("common/gltf.vert", "common/gltf.frag", viewDefines(view));
-    GltfRenderer renderer(shader);
-    if (punctual) {
-        const std::vector<PunctualLight> fallback = {defaultLight()};
-        renderer.setLights(model.lights.empty() ? fallback : model.lights);
-    }
-    shader.set("usePunctual", punctual ? 1 : 0);
-    shader.set("useIbl", ibl ? 1 : 0);
-    shader.set("multipleScattering", app.options().has("--single-scattering") ? 0 : 1);
-    shader.set("toneMapper", toneMapper);
-    shader.set("exposure", exposure);
-    selectView(shader, view);
+    const std::vector<PunctualLight> fallback = {defaultLight()};
+    const std::span<const PunctualLight> lights =
+        model.lights.empty() ? std::span<const PunctualLight>(fallback) : model.lights;
 
     // 05's maps, from the same cache: irradiance 32^2, prefiltered 128^2 with 5 mips, the BRDF
-    // LUT 512^2. Units 5-7 hold them for the whole run. Every map is made (or read) here, before
-    // the first frame; the environment keeps a reference to the cache, so both live as long.
+    // LUT 512^2, on units 5-7. Made (or read) before the first frame that has the image-based
+    // light, that is before the first frame unless --no-ibl; the environment keeps a reference
+    // to the cache, so both live as long.
     std::optional<IblCache> cache;
     std::optional<IblEnvironment> environment;
     std::optional<TextureCube> irradianceMap, prefilterMap;
     std::optional<Texture2D> brdfLUT;
-    std::optional<Skybox> skybox;
-    if (ibl) {
-        cache.emplace(cacheDir(app.options()));
-        environment.emplace(*cache, environmentFile(app.options()));
-        environment->environmentMap();  // for the sky
-        irradianceMap.emplace(environment->irradianceMap(32));
-        prefilterMap.emplace(environment->prefilteredMap(128, 5, kPrefilterSamples));
-        brdfLUT.emplace(brdfLut(*cache, 512, 1024, BrdfLutChannels::ScaleBias));
-        app.addPrecomputeSeconds(cache->computeSeconds());
-        useIblMaps(shader, environment->environmentMap(), *irradianceMap, *prefilterMap, *brdfLUT,
-                   GltfRenderer::kFirstIblUnit);
-        skybox.emplace();
-        skybox->setToneMapping(toneMapper, exposure);
-    }
+    Skybox skybox;
+    // A renderer for each program a view needs (it sets the program's texture units).
+    std::map<const Shader*, std::unique_ptr<GltfRenderer>> renderers;
 
     glEnable(GL_DEPTH_TEST);
     while (app.nextFrame()) {
+        const bool ibl = !app.options().has("--no-ibl");
+        const bool punctual = !app.options().has("--no-punctual");
+        const int toneMapper = int(*cpu::toneMapperFromName(app.flagChoice("--tonemap")));
+        const float exposure = app.flagNumber("--exposure");
+        const View view = viewNamed(app.flagChoice("--view"));
+        Shader& shader = app.shader("common/gltf.vert", "common/gltf.frag", viewDefines(view));
+        std::unique_ptr<GltfRenderer>& renderer = renderers[&shader];
+        if (!renderer) renderer = std::make_unique<GltfRenderer>(shader);
+        renderer->setLights(punctual ? lights : std::span<const PunctualLight>());
+        if (ibl && !cache) {
+            cache.emplace(cacheDir(app.options()));
+            environment.emplace(*cache, environmentFile(app.options()));
+            environment->environmentMap();  // for the sky
+            irradianceMap.emplace(environment->irradianceMap(32));
+            prefilterMap.emplace(environment->prefilteredMap(128, 5, kPrefilterSamples));
+            brdfLUT.emplace(brdfLut(*cache, 512, 1024, BrdfLutChannels::ScaleBias));
+            app.addPrecomputeSeconds(cache->computeSeconds());
+            app.bindRenderTarget();  // the frame's, after the precomputation's own
+        }
+
         // Without the environment, a dark grey background (linear; the target encodes it).
         glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -138,9 +139,20 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.cameraPosition());
-        // the sky first here: blended primitives must be drawn over it
-        if (skybox) skybox->draw(environment->environmentMap(), app.view(), app.projection());
-        renderer.draw(gpuModel, glm::mat4(1.0f), app.view());
+        shader.set("usePunctual", punctual ? 1 : 0);
+        shader.set("useIbl", ibl ? 1 : 0);
+        shader.set("multipleScattering", app.options().has("--single-scattering") ? 0 : 1);
+        shader.set("toneMapper", toneMapper);
+        shader.set("exposure", exposure);
+        selectView(shader, view);
+        if (ibl) {
+            useIblMaps(shader, environment->environmentMap(), *irradianceMap, *prefilterMap,
+                       *brdfLUT, GltfRenderer::kFirstIblUnit);
+            // the sky first here: blended primitives must be drawn over it
+            skybox.setToneMapping(toneMapper, exposure);
+            skybox.draw(environment->environmentMap(), app.view(), app.projection());
+        }
+        renderer->draw(gpuModel, glm::mat4(1.0f), app.view());
     }
     return 0;
 }

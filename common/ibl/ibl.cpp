@@ -233,6 +233,7 @@ Skybox::Skybox() : shader_("ibl/skybox.vert", "ibl/skybox.frag"), cube_(pbr::cub
     shader_.set("environmentMap", 0);
     shader_.set("toneMapper", -1);
     shader_.set("exposure", 1.0f);
+    shader_.set("lod", 0.0f);
 }
 
 void Skybox::setToneMapping(int toneMapper, float exposure) {
@@ -241,7 +242,7 @@ void Skybox::setToneMapping(int toneMapper, float exposure) {
 }
 
 void Skybox::draw(const TextureCube& environment, const glm::mat4& view,
-                  const glm::mat4& projection) {
+                  const glm::mat4& projection, float lod) {
     GLint depthFunc = GL_LESS;
     glGetIntegerv(GL_DEPTH_FUNC, &depthFunc);
     GLint cullFace = GL_BACK;
@@ -251,6 +252,7 @@ void Skybox::draw(const TextureCube& environment, const glm::mat4& view,
     shader_.use();
     shader_.set("view", view);
     shader_.set("projection", projection);
+    shader_.set("lod", lod);
     environment.bind(0);
     cube_.draw();
     glDepthFunc(GLenum(depthFunc));  // the caller's, whatever they were

@@ -89,7 +89,9 @@ void useIblMaps(Shader& shader, const TextureCube& environment, const TextureCub
 class Skybox {
 public:
     Skybox();
-    void draw(const TextureCube& environment, const glm::mat4& view, const glm::mat4& projection);
+    // `lod`: the mip level read (0 the sharpest; a prefiltered map's levels are its roughnesses).
+    void draw(const TextureCube& environment, const glm::mat4& view, const glm::mat4& projection,
+              float lod = 0.0f);
     // The glTF samples' output: exposure and one of tonemap.glsl's tone mappers, written linear
     // for an sRGB render target. By default the sky is written as 04-06 write their spheres
     // (Reinhard, then gamma 1/2.2).

@@ -13,38 +13,46 @@
 #include "math/sphere_grid.h"
 
 int main(int argc, char** argv) try {
+    // The lesson's knobs, each a flag and, in a window, a control of the live panel: the sample
+    // reads them every frame (asLive), so a change shows in the next frame.
     pbr::App app(
         argc, argv,
         {.name = "01_lighting",
          .title = "01 lighting: Cook-Torrance, 4 point lights",
          .cameraPosition = {0.0f, 0.0f, 23.0f},  // the whole grid; the text starts at (0,0,3)
-         .flags = {pbr::FlagSpec::integer(
-                       "--lights", "N", "use the first N of the 4 point lights (default 4)", 0, 4),
+         .flags = {pbr::FlagSpec::integer("--lights", "N", "use the first N of the 4 point lights",
+                                          0, 4, 4)
+                       .asLive(),
+                   pbr::FlagSpec::numbers("--light-color", "R,G,B",
+                                          "the point lights' radiance (the text's 300 each)", 3,
+                                          0.0, 1000.0, {300.0, 300.0, 300.0})
+                       .asLive(),
+                   pbr::FlagSpec::numbers("--albedo", "R,G,B",
+                                          "every sphere's albedo, linear (the text's dark red)", 3,
+                                          0.0, 1.0, {0.5, 0.0, 0.0})
+                       .asLive(),
                    pbr::FlagSpec::number("--roughness-offset", "D",
-                                         "add D (-1 to 1) to every sphere's roughness (default 0)",
-                                         -1.0, 1.0),
-                   pbr::viewFlag(pbr::kDirectLightViews)}});
-    const int lightCount = app.flagInt("--lights", 4);
-    const float roughnessOffset = app.flagNumber("--roughness-offset", 0.0f);
-
-    const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
-    pbr::Shader& shader =
-        app.shader("common/pbr.vert", "01_lighting/pbr.frag", pbr::viewDefines(view));
+                                         "add D (-1 to 1) to every sphere's roughness", -1.0, 1.0,
+                                         0.0)
+                       .asLive(),
+                   pbr::FlagSpec::number("--metallic-offset", "D",
+                                         "add D (-1 to 1) to every sphere's metallic", -1.0, 1.0,
+                                         0.0)
+                       .asLive(),
+                   pbr::viewFlag(pbr::kDirectLightViews).asLive()}});
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
-
-    // Constant material and the lights, set before the first frame is drawn (the text's first
-    // frame has no light uniforms yet).
-    shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
-    shader.set("ao", 1.0f);
-    pbr::selectView(shader, view);
-    const auto lightPositions = std::span(pbr::kGridLightPositions).first(size_t(lightCount));
-    pbr::setPointLights(shader, lightPositions, glm::vec3(300.0f, 300.0f, 300.0f));
-
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f};
 
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
+        const int lightCount = app.flagInt("--lights");
+        const float roughnessOffset = app.flagNumber("--roughness-offset");
+        const float metallicOffset = app.flagNumber("--metallic-offset");
+        const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+        pbr::Shader& shader =
+            app.shader("common/pbr.vert", "01_lighting/pbr.frag", pbr::viewDefines(view));
+
         glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
@@ -52,15 +60,22 @@ int main(int argc, char** argv) try {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
+        // The material (one albedo, ao 1) and the lights.
+        shader.set("albedo", app.flagVec3("--albedo"));
+        shader.set("ao", 1.0f);
+        pbr::selectView(shader, view);
+        const auto lightPositions = std::span(pbr::kGridLightPositions).first(size_t(lightCount));
+        pbr::setPointLights(shader, lightPositions, app.flagVec3("--light-color"));
 
         // Metallic rises with the row (bottom row 0), roughness with the column; roughness is
         // kept at 0.05 or above, since a perfectly smooth sphere's point-light highlight vanishes.
         // A sphere wholly out of view is skipped: it would draw nothing.
-        const pbr::Frustum view = app.frustum();
+        const pbr::Frustum frustum = app.frustum();
         for (int row = 0; row < grid.nrRows; ++row) {
-            shader.set("metallic", float(row) / float(grid.nrRows));
+            const float metallic = float(row) / float(grid.nrRows) + metallicOffset;
+            shader.set("metallic", std::clamp(metallic, 0.0f, 1.0f));
             for (int col = 0; col < grid.nrColumns; ++col) {
-                if (!view.mayContain(grid.position(row, col), 1.0f)) continue;
+                if (!frustum.mayContain(grid.position(row, col), 1.0f)) continue;
                 const float roughness = float(col) / float(grid.nrColumns) + roughnessOffset;
                 shader.set("roughness", std::clamp(roughness, 0.05f, 1.0f));
                 shader.setModel(grid.model(row, col));

@@ -14,16 +14,21 @@
 
 int main(int argc, char** argv) try {
     std::vector<pbr::FlagSpec> flags = pbr::iblFlags();
+    // The parts of the light, and what is seen: read every frame (live in the window's panel).
     flags.push_back(pbr::FlagSpec::integer(
-        "--lights", "N", "use the first N of the 4 point lights (default 4)", 0, 4));
-    flags.push_back(pbr::FlagSpec::toggle("--no-ibl", "leave out the image-based light"));
-    flags.push_back(pbr::viewFlag(pbr::kIrradianceViews));
+        "--lights", "N", "use the first N of the 4 point lights", 0, 4, 4).asLive());
+    flags.push_back(
+        pbr::FlagSpec::toggle("--no-ibl", "leave out the image-based light").asLive());
+    flags.push_back(pbr::FlagSpec::choice(
+        "--background", {"environment", "irradiance"},
+        "what the sky shows: the environment (default) or its irradiance, the light the "
+        "spheres' diffuse term reads").asLive());
+    flags.push_back(pbr::viewFlag(pbr::kIrradianceViews).asLive());
     pbr::App app(argc, argv,
                  {.name = "04_ibl_irradiance",
                   .title = "04 IBL: diffuse irradiance",
                   .cameraPosition = {0.0f, 0.0f, 21.0f},  // 23 from the grid at z = -2
                   .flags = flags});
-    const int lightCount = app.flagInt("--lights", 4);
 
     // Precompute (or load from the cache): the environment cube (512^2, mipmapped) and its
     // irradiance (32^2).
@@ -33,24 +38,18 @@ int main(int argc, char** argv) try {
     const pbr::TextureCube irradianceMap = environment.irradianceMap(32);
     app.addPrecomputeSeconds(cache.computeSeconds());
 
-    const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
-    pbr::Shader& shader =
-        app.shader("common/pbr.vert", "04_ibl_irradiance/pbr.frag", pbr::viewDefines(view));
     pbr::Skybox skybox;
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
-
-    shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
-    shader.set("ao", 1.0f);
-    shader.set("irradianceMap", 0);
-    shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
-    pbr::selectView(shader, view);
-    pbr::setPointLights(shader, std::span(pbr::kGridLightPositions).first(size_t(lightCount)),
-                        glm::vec3(300.0f));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
 
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
+        const int lightCount = app.flagInt("--lights");
+        const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+        pbr::Shader& shader =
+            app.shader("common/pbr.vert", "04_ibl_irradiance/pbr.frag", pbr::viewDefines(view));
+
         glClearColor(0.2f, 0.3f, 0.3f, 1.0f);  // hidden by the skybox wherever it is drawn
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
@@ -58,6 +57,13 @@ int main(int argc, char** argv) try {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
+        shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
+        shader.set("ao", 1.0f);
+        shader.set("irradianceMap", 0);
+        shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
+        pbr::selectView(shader, view);
+        pbr::setPointLights(shader, std::span(pbr::kGridLightPositions).first(size_t(lightCount)),
+                            glm::vec3(300.0f));
         irradianceMap.bind(0);
         const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing
         for (int row = 0; row < grid.nrRows; ++row) {
@@ -71,7 +77,9 @@ int main(int argc, char** argv) try {
             }
         }
 
-        skybox.draw(environmentMap, app.view(), app.projection());  // last: only where nothing is
+        // Last: only where nothing is.
+        const bool irradianceSky = app.flagChoice("--background") == "irradiance";
+        skybox.draw(irradianceSky ? irradianceMap : environmentMap, app.view(), app.projection());
     }
     return 0;
 } catch (...) {

@@ -25,21 +25,31 @@ int main(int argc, char** argv) try {
     std::vector<pbr::FlagSpec> flags = pbr::iblFlags();
     flags.push_back(
         pbr::FlagSpec::toggle("--textured", "five spheres in the project's material sets"));
+    // The ambient term's form, the parts of the light, and what is seen: read every frame (live
+    // in the window's panel).
     flags.push_back(pbr::FlagSpec::choice(
         "--split-sum", {"text", "exact"},
         "the ambient term: the text's (F times the LUT's scale; default) or the split sum as its "
-        "derivation has it (F0 times the scale, diffuse weighted by what the lobe leaves)"));
+        "derivation has it (F0 times the scale, diffuse weighted by what the lobe leaves)").asLive());
     flags.push_back(pbr::FlagSpec::integer(
-        "--lights", "N", "use the first N of the 4 point lights (default 4)", 0, 4));
-    flags.push_back(pbr::FlagSpec::toggle("--no-ibl", "leave out the image-based light"));
-    flags.push_back(pbr::viewFlag(pbr::kSplitSumViews));
+        "--lights", "N", "use the first N of the 4 point lights", 0, 4, 4).asLive());
+    flags.push_back(
+        pbr::FlagSpec::toggle("--no-ibl", "leave out the image-based light").asLive());
+    flags.push_back(pbr::FlagSpec::choice(
+        "--background", {"environment", "irradiance", "prefiltered"},
+        "what the sky shows: the environment (default), its irradiance, or the prefiltered "
+        "map at --background-lod").asLive());
+    flags.push_back(pbr::FlagSpec::number(
+        "--background-lod", "L",
+        "the sky's mip level: of the prefiltered map, roughness L / 4; of the environment, its "
+        "box-filtered mips", 0.0, 4.0, 0.0).asLive());
+    flags.push_back(pbr::viewFlag(pbr::kSplitSumViews).asLive());
     pbr::App app(argc, argv,
                  {.name = "05_ibl_specular",
                   .title = "05 IBL: specular",
                   .cameraPosition = {0.0f, 0.0f, 21.0f},  // 23 from the grid at z = -2
                   .flags = flags});
     const bool textured = app.options().has("--textured");
-    const int lightCount = app.flagInt("--lights", 4);
     if (textured) app.setDefaultCamera({0.0f, 0.0f, 8.0f});  // the row of five, 10 away
 
     // Precompute (or load from the cache): environment 512^2, irradiance 32^2, prefiltered
@@ -54,12 +64,6 @@ int main(int argc, char** argv) try {
     const pbr::Texture2D brdfLUT = pbr::brdfLut(cache, 512, 1024, pbr::BrdfLutChannels::ScaleBias);
     app.addPrecomputeSeconds(cache.computeSeconds());
 
-    const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
-    pbr::Shader& shader = textured ? app.shader("common/pbr_tangent.vert",
-                                                "05_ibl_specular/pbr_textured.frag",
-                                                pbr::viewDefines(view))
-                                   : app.shader("common/pbr.vert", "05_ibl_specular/pbr.frag",
-                                                pbr::viewDefines(view));
     pbr::Skybox skybox;
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
     std::vector<pbr::PbrTextures> materials;
@@ -67,28 +71,21 @@ int main(int argc, char** argv) try {
         for (const char* name : kMaterials) {
             materials.push_back(pbr::loadPbrTextures(pbr::materialDir() / name));
         }
-        shader.set("albedoMap", 0);
-        shader.set("normalMap", 1);
-        shader.set("metallicMap", 2);
-        shader.set("roughnessMap", 3);
-        shader.set("aoMap", 4);
-    } else {
-        shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
-        shader.set("ao", 1.0f);
     }
-    // Units 5-7 hold the split-sum maps for the whole run: nothing else binds them.
-    pbr::useIblMaps(shader, environmentMap, irradianceMap, prefilterMap, brdfLUT, 5);
-    shader.set("exactSplitSum", app.flagChoice("--split-sum") == "exact" ? 1 : 0);
-    shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
-    pbr::selectView(shader, view);
-    pbr::setPointLights(shader, std::span(pbr::kGridLightPositions).first(size_t(lightCount)),
-                        glm::vec3(300.0f));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f, .z = -2.0f};
     const pbr::SphereGrid row{.nrRows = 1, .nrColumns = 5, .spacing = 2.5f, .z = -2.0f};
 
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
+        const int lightCount = app.flagInt("--lights");
+        const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+        pbr::Shader& shader = textured ? app.shader("common/pbr_tangent.vert",
+                                                    "05_ibl_specular/pbr_textured.frag",
+                                                    pbr::viewDefines(view))
+                                       : app.shader("common/pbr.vert", "05_ibl_specular/pbr.frag",
+                                                    pbr::viewDefines(view));
+
         glClearColor(0.2f, 0.3f, 0.3f, 1.0f);  // hidden by the skybox wherever it is drawn
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
@@ -96,6 +93,23 @@ int main(int argc, char** argv) try {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
+        if (textured) {
+            shader.set("albedoMap", 0);
+            shader.set("normalMap", 1);
+            shader.set("metallicMap", 2);
+            shader.set("roughnessMap", 3);
+            shader.set("aoMap", 4);
+        } else {
+            shader.set("albedo", glm::vec3(0.5f, 0.0f, 0.0f));
+            shader.set("ao", 1.0f);
+        }
+        // Units 5-7 hold the split-sum maps: the materials take 0-4.
+        pbr::useIblMaps(shader, environmentMap, irradianceMap, prefilterMap, brdfLUT, 5);
+        shader.set("exactSplitSum", app.flagChoice("--split-sum") == "exact" ? 1 : 0);
+        shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
+        pbr::selectView(shader, view);
+        pbr::setPointLights(shader, std::span(pbr::kGridLightPositions).first(size_t(lightCount)),
+                            glm::vec3(300.0f));
         const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing
         if (textured) {
             for (int col = 0; col < row.nrColumns; ++col) {
@@ -117,7 +131,12 @@ int main(int argc, char** argv) try {
             }
         }
 
-        skybox.draw(environmentMap, app.view(), app.projection());  // last: only where nothing is
+        // Last: only where nothing is.
+        const std::string background = app.flagChoice("--background");
+        const pbr::TextureCube& sky = background == "irradiance"    ? irradianceMap
+                                      : background == "prefiltered" ? prefilterMap
+                                                                    : environmentMap;
+        skybox.draw(sky, app.view(), app.projection(), app.flagNumber("--background-lod"));
     }
     return 0;
 } catch (...) {

@@ -29,12 +29,15 @@ int main(int argc, char** argv) try {
          .cameraPosition = {0.0f, 5.5f, 12.0f},
          .cameraPitch = -22.0f,
          .flags = {
+             // --only, --point-lights and --view are read every frame (live in the panel)
              pbr::FlagSpec::choice("--only", onlyChoices,
-                                   "draw with one kind of light (default all)"),
+                                   "draw with one kind of light (default all)")
+                 .asLive(),
              pbr::FlagSpec::integer("--point-lights", "N",
                                     "add N moving point lights (their places depend only on "
                                     "--time), for the cost of many lights",
-                                    0, pbr::LightBlock::kMaxLights - 5),
+                                    0, pbr::LightBlock::kMaxLights - 5, 0)
+                 .asLive(),
              pbr::FlagSpec::numbers("--attenuation", "C,L,Q",
                                     "the point light's constant, linear and quadratic terms, "
                                     "each >= 0, not all 0 (default 1,0.7,1.8)",
@@ -43,9 +46,7 @@ int main(int argc, char** argv) try {
                                    "a plain material instead of the maps: the tint as albedo, "
                                    "a rough dielectric floor, spheres of roughness 0.4 and "
                                    "metallic 0 to 1 from left to right (the tests' surface)"),
-             pbr::viewFlag(pbr::kLightTypeViews)}});
-    const std::string only = app.flagChoice("--only");
-    const int extraLights = app.flagInt("--point-lights", 0);
+             pbr::viewFlag(pbr::kLightTypeViews).asLive()}});
     pbr::Attenuation attenuation = light_types::kPointAttenuation;
     if (const auto n = app.flagNumbers("--attenuation")) {
         if ((*n)[0] + (*n)[1] + (*n)[2] <= 0.0f) {
@@ -55,19 +56,6 @@ int main(int argc, char** argv) try {
         attenuation = {(*n)[0], (*n)[1], (*n)[2]};
     }
     const bool untextured = app.options().has("--untextured");
-
-    const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
-    pbr::Shader& shader = app.shader("common/pbr_tangent.vert", "09_light_types/light_types.frag",
-                                     pbr::viewDefines(view));
-    pbr::LightBuffer::attach(shader.id());
-    shader.set("albedoMap", 0);
-    shader.set("normalMap", 1);
-    shader.set("metallicMap", 2);
-    shader.set("roughnessMap", 3);
-    shader.set("aoMap", 4);
-    shader.set("useDerivativeTangents", 0);
-    shader.set("untextured", untextured ? 1 : 0);
-    pbr::selectView(shader, view);
 
     const std::vector<light_types::Object> objects = light_types::objects();
     std::map<std::string, pbr::PbrTextures> sets;  // each material set loaded once
@@ -79,28 +67,37 @@ int main(int argc, char** argv) try {
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 32));
     const pbr::GpuMesh floorMesh(pbr::quad());
 
-    std::vector<pbr::PackedLight> fixedLights;
-    for (const pbr::PackedLight& light : light_types::sceneLights(attenuation)) {
-        if (only == "all" || pbr::kLightTypeNames[int(light.type())] == only)
-            fixedLights.push_back(light);
-    }
-    // The scene's own lights go up once; only the moving ones change from frame to frame.
     pbr::LightBuffer lightBuffer;
-    lightBuffer.upload(fixedLights);
 
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
-        if (extraLights > 0) {
-            std::vector<pbr::PackedLight> lights = fixedLights;
-            const auto moving = light_types::movingLights(extraLights, app.time());
-            lights.insert(lights.end(), moving.begin(), moving.end());
-            lightBuffer.upload(lights);
+        const std::string only = app.flagChoice("--only");
+        const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
+        pbr::Shader& shader = app.shader("common/pbr_tangent.vert",
+                                         "09_light_types/light_types.frag", pbr::viewDefines(view));
+        // The scene's lights of the kinds asked for, and the moving ones where they are now.
+        std::vector<pbr::PackedLight> lights;
+        for (const pbr::PackedLight& light : light_types::sceneLights(attenuation)) {
+            if (only == "all" || pbr::kLightTypeNames[int(light.type())] == only)
+                lights.push_back(light);
         }
+        const auto moving = light_types::movingLights(app.flagInt("--point-lights"), app.time());
+        lights.insert(lights.end(), moving.begin(), moving.end());
+        lightBuffer.upload(lights);
 
         glClearColor(0.02f, 0.02f, 0.03f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         shader.use();
+        pbr::LightBuffer::attach(shader.id());
+        shader.set("albedoMap", 0);
+        shader.set("normalMap", 1);
+        shader.set("metallicMap", 2);
+        shader.set("roughnessMap", 3);
+        shader.set("aoMap", 4);
+        shader.set("useDerivativeTangents", 0);
+        shader.set("untextured", untextured ? 1 : 0);
+        pbr::selectView(shader, view);
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());

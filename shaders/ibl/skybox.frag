@@ -5,12 +5,13 @@ in vec3 WorldPos;
 uniform samplerCube environmentMap;
 uniform int toneMapper;  // -1: the text's output (04-06); else a TONEMAP_* with linear output
 uniform float exposure;
+uniform float lod;  // the mip level shown: 0, or a prefiltered map's roughness level
 
 #include "tonemap.glsl"
 
 void main()
 {
-    vec3 envColor = textureLod(environmentMap, WorldPos, 0.0).rgb;
+    vec3 envColor = textureLod(environmentMap, WorldPos, lod).rgb;
     if (toneMapper < 0)
         FragColor = vec4(gammaCorrect(reinhard(envColor)), 1.0);  // tone-mapped like the spheres
     else

@@ -57,6 +57,9 @@ std::vector<GoldenCase> goldenCases() {
          {},
          true},
     };
+    // The live panel drawn into the picture (--panel), over 01's grid: the controls made from
+    // 01's flag declarations, the command line of the view.
+    cases.push_back({"01_panel", "01_lighting", {"--panel", "--size", "960x540"}, 0.15});
     // 01's term views that teach most (01's README, "Term views"), at a small size.
     for (const char* view : {"d", "g", "f", "diffuse", "normal"}) {
         cases.push_back({std::string("01_view_") + view,

@@ -9,9 +9,9 @@ namespace pbr {
 namespace {
 
 const std::vector<FlagSpec> kSampleFlags = {
-    FlagSpec::integer("--lights", "N", "lights", 0, 4),
+    FlagSpec::integer("--lights", "N", "lights", 0, 4, 4),
     FlagSpec::toggle("--textured", "switch"),
-    FlagSpec::number("--roughness-offset", "D", "offset", -1.0, 1.0),
+    FlagSpec::number("--roughness-offset", "D", "offset", -1.0, 1.0, 0.0),
     FlagSpec::choice("--filter", {"trilinear", "nearest"}, "filtering"),
     FlagSpec::text("--model", "FILE", "a model"),
     FlagSpec::outputFolder("--ktx-dir", "DIR", "a folder"),

@@ -1,0 +1,312 @@
+#include "app/panel.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#ifdef PBR_HAVE_IMGUI
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+#endif
+
+namespace pbr {
+
+#ifndef PBR_HAVE_IMGUI
+
+struct Panel::State {};
+bool Panel::available() {
+    return false;
+}
+Panel::Panel(std::vector<FlagSpec>, std::function<void(const std::string&)>) {}
+Panel::~Panel() = default;
+std::vector<std::string> Panel::update(const PanelInput&, glm::ivec2,
+                                       std::map<std::string, std::string>&, PanelStatus&) {
+    return {};
+}
+bool Panel::wantsMouse() const {
+    return false;
+}
+void Panel::draw() const {}
+std::string Panel::layout() const {
+    return {};
+}
+
+#else
+
+namespace {
+
+constexpr float kPanelWidth = 430.0f;
+constexpr float kMargin = 10.0f;
+
+// A slider's value as the flag's text: three significant digits, so that the command line stays
+// readable (and the value the sample reads is the text's, as from the command line).
+std::string sliderText(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return flagNumberText(std::strtod(text, nullptr));
+}
+
+std::vector<double> numbersOf(const std::string& text) {
+    std::vector<double> numbers;
+    std::stringstream stream(text);
+    std::string part;
+    while (std::getline(stream, part, ',')) numbers.push_back(std::strtod(part.c_str(), nullptr));
+    return numbers;
+}
+
+// The value a control shows: the flag's text when given, else its default.
+std::string currentText(const FlagSpec& spec, const std::map<std::string, std::string>& values) {
+    const auto found = values.find(spec.name);
+    if (found != values.end()) return found->second;
+    if (spec.kind == FlagSpec::Kind::Choice && !spec.choices.empty()) return spec.choices.front();
+    return spec.defaultValue;
+}
+
+}  // namespace
+
+struct Panel::State {
+    std::vector<FlagSpec> flags;
+    std::function<void(const std::string&)> copy;
+    ImGuiContext* context = nullptr;
+    std::ostringstream layout;
+    bool wantsMouse = false;
+    bool laidOut = false;
+
+    // The frame of the item about to be laid out (a slider, a combo box), for layout().
+    void noteFrame(const std::string& id, float width) {
+        const ImVec2 at = ImGui::GetCursorScreenPos();
+        note(id, at, ImVec2(at.x + width, at.y + ImGui::GetFrameHeight()));
+    }
+    // The item just laid out.
+    void noteItem(const std::string& id) { note(id, ImGui::GetItemRectMin(), ImGui::GetItemRectMax()); }
+    void note(const std::string& id, ImVec2 min, ImVec2 max) {
+        layout << id << ' ' << int(std::lround(min.x)) << ' ' << int(std::lround(min.y)) << ' '
+               << int(std::lround(max.x - min.x)) << ' ' << int(std::lround(max.y - min.y)) << '\n';
+    }
+
+    // One flag's control; true when it changed the value.
+    bool control(const FlagSpec& spec, std::map<std::string, std::string>& values);
+};
+
+bool Panel::State::control(const FlagSpec& spec, std::map<std::string, std::string>& values) {
+    const std::string text = currentText(spec, values);
+    const char* label = spec.name.c_str();
+    if (!spec.live) {
+        // Read once at start-up: the value, no control (a restart with the flag changes it).
+        ImGui::BeginDisabled();
+        if (spec.kind == FlagSpec::Kind::Switch) {
+            bool on = values.count(spec.name) != 0;
+            ImGui::Checkbox(label, &on);
+        } else {
+            ImGui::Text("%s %s", label, text.empty() ? "(not given)" : text.c_str());
+        }
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+            ImGui::SetTooltip("%s\n(read at start-up: restart with %s to change it)",
+                              spec.help.c_str(), label);
+        }
+        return false;
+    }
+    bool changed = false;
+    const float width = ImGui::CalcItemWidth();
+    switch (spec.kind) {
+        case FlagSpec::Kind::Switch: {
+            bool on = values.count(spec.name) != 0;
+            if (ImGui::Checkbox(label, &on)) {
+                if (on) {
+                    values[spec.name] = "";
+                } else {
+                    values.erase(spec.name);
+                }
+                changed = true;
+            }
+            noteItem(spec.name);
+            break;
+        }
+        case FlagSpec::Kind::Integer: {
+            const int value = int(std::strtol(text.c_str(), nullptr, 10));
+            int next = value;
+            ImGui::PushID(label);
+            if (ImGui::Button("-")) next = std::max(value - 1, int(spec.min));
+            noteItem(spec.name + " -");
+            ImGui::SameLine();
+            if (ImGui::Button("+")) next = std::min(value + 1, int(spec.max));
+            noteItem(spec.name + " +");
+            ImGui::PopID();
+            ImGui::SameLine();
+            ImGui::Text("%d  %s", value, label);
+            if (next != value) {
+                values[spec.name] = std::to_string(next);
+                changed = true;
+            }
+            break;
+        }
+        case FlagSpec::Kind::Number: {
+            float value = float(std::strtod(text.c_str(), nullptr));
+            ImGuiSliderFlags flags = ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp;
+            // A range over many decades (an exposure) slides by its logarithm.
+            if (spec.min > 0.0 && spec.max / spec.min > 1000.0) flags |= ImGuiSliderFlags_Logarithmic;
+            noteFrame(spec.name, width);
+            if (ImGui::SliderFloat(label, &value, float(spec.min), float(spec.max), "%.3g", flags)) {
+                const std::string next = sliderText(value);
+                if (next != text) {
+                    values[spec.name] = next;
+                    changed = true;
+                }
+            }
+            break;
+        }
+        case FlagSpec::Kind::Numbers: {
+            std::vector<double> numbers = numbersOf(text);
+            numbers.resize(size_t(std::max(spec.count, 1)), spec.min);
+            std::vector<float> floats(numbers.begin(), numbers.end());
+            const float min = float(spec.min), max = float(spec.max);
+            noteFrame(spec.name, width);
+            if (ImGui::SliderScalarN(label, ImGuiDataType_Float, floats.data(), int(floats.size()),
+                                     &min, &max, "%.3g",
+                                     ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp)) {
+                std::string next;
+                for (const float f : floats) next += (next.empty() ? "" : ",") + sliderText(f);
+                if (next != text) {
+                    values[spec.name] = next;
+                    changed = true;
+                }
+            }
+            break;
+        }
+        case FlagSpec::Kind::Choice: {
+            noteFrame(spec.name, width);
+            if (ImGui::BeginCombo(label, text.c_str())) {
+                for (const std::string& choice : spec.choices) {
+                    const bool selected = choice == text;
+                    if (ImGui::Selectable(choice.c_str(), selected) && !selected) {
+                        values[spec.name] = choice;
+                        changed = true;
+                    }
+                    noteItem(spec.name + "=" + choice);
+                }
+                ImGui::EndCombo();
+            }
+            break;
+        }
+        case FlagSpec::Kind::Text:
+        case FlagSpec::Kind::OutputFolder:
+            ImGui::Text("%s %s", label, text.empty() ? "(not given)" : text.c_str());
+            break;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec.help.c_str());
+    return changed;
+}
+
+bool Panel::available() {
+    return true;
+}
+
+Panel::Panel(std::vector<FlagSpec> flags, std::function<void(const std::string&)> copy)
+    : state_(std::make_unique<State>()) {
+    state_->flags = std::move(flags);
+    state_->copy = std::move(copy);
+    IMGUI_CHECKVERSION();
+    state_->context = ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // no imgui.ini: the suite writes no file it was not asked for
+    io.LogFilename = nullptr;
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().Alpha = 0.92f;
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+Panel::~Panel() {
+    ImGui::SetCurrentContext(state_->context);
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui::DestroyContext(state_->context);
+}
+
+std::vector<std::string> Panel::update(const PanelInput& input, glm::ivec2 size,
+                                       std::map<std::string, std::string>& values,
+                                       PanelStatus& status) {
+    // Dear ImGui sizes a new window in its first frame and shows it from the second: the first
+    // update lays the panel out twice, so that a one-frame headless picture (--panel) shows it.
+    if (!state_->laidOut) {
+        state_->laidOut = true;
+        PanelStatus first = status;
+        PanelInput still = input;
+        still.leftButton = false;
+        layoutFrame(still, size, values, first);
+    }
+    return layoutFrame(input, size, values, status);
+}
+
+std::vector<std::string> Panel::layoutFrame(const PanelInput& input, glm::ivec2 size,
+                                            std::map<std::string, std::string>& values,
+                                            PanelStatus& status) {
+    ImGui::SetCurrentContext(state_->context);
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(float(std::max(size.x, 1)), float(std::max(size.y, 1)));
+    io.DeltaTime = std::max(input.deltaSeconds, 1.0e-4f);
+    io.MousePos = input.cursor.x < 0.0f || input.cursor.y < 0.0f
+                      ? ImVec2(-FLT_MAX, -FLT_MAX)
+                      : ImVec2(input.cursor.x, input.cursor.y);
+    io.MouseDown[0] = input.leftButton;
+    io.MouseWheel = input.scroll;
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    state_->layout.str("");
+    std::vector<std::string> changed;
+
+    ImGui::SetNextWindowPos(ImVec2(kMargin, kMargin), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.0f), ImGuiCond_FirstUseEver);
+    ImGui::Begin(status.title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::PushItemWidth(kPanelWidth * 0.55f);
+    if (status.frameMilliseconds >= 0.0) {
+        ImGui::Text("%.1f ms a frame   (Tab hides this panel)", status.frameMilliseconds);
+    } else {
+        ImGui::TextUnformatted("headless   (Tab hides this panel in a window)");
+    }
+    status.pauseClicked = ImGui::Button(status.paused ? "run" : "pause");
+    state_->noteItem("pause");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!status.paused);
+    status.stepClicked = ImGui::Button("step");
+    ImGui::EndDisabled();
+    state_->noteItem("step");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("time");
+    ImGui::Separator();
+    for (const FlagSpec& spec : state_->flags) {
+        if (state_->control(spec, values)) changed.push_back(spec.name);
+    }
+    ImGui::Separator();
+    ImGui::TextUnformatted("the command line of this view:");
+    ImGui::PushTextWrapPos(kPanelWidth - kMargin);
+    ImGui::TextUnformatted(status.commandLine.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("copy")) state_->copy(status.commandLine);
+    state_->noteItem("copy");
+    ImGui::PopItemWidth();
+    ImGui::End();
+    ImGui::Render();
+    state_->wantsMouse = io.WantCaptureMouse;
+    return changed;
+}
+
+bool Panel::wantsMouse() const {
+    return state_->wantsMouse;
+}
+
+void Panel::draw() const {
+    ImGui::SetCurrentContext(state_->context);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+std::string Panel::layout() const {
+    return state_->layout.str();
+}
+
+#endif
+
+}  // namespace pbr

@@ -1,0 +1,223 @@
+// The live panel (common/app/panel.h) driven headless through Dear ImGui's input, as a window
+// drives it: PBR_PANEL_SCRIPT gives the mouse of each frame (position and left button). A drag
+// on a slider, clicks on a stepper's buttons, a combo box's choice: after each, the last frame
+// must equal, byte for byte, a headless run started with the flag at the value the change gave,
+// the command line the panel shows must be that run's, and the change must be the control's own
+// flag, near the value under the mouse.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/golden.h"
+#include "support/process.h"
+
+namespace pbr::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Rect {
+    int x = 0, y = 0, w = 0, h = 0;
+    // A point inside, as fractions of the width and height.
+    std::string at(double fx, double fy = 0.5) const {
+        return std::to_string(int(x + fx * w)) + " " + std::to_string(int(y + fy * h));
+    }
+};
+
+struct PanelRun {
+    RunResult run;
+    fs::path image;
+    std::map<std::string, Rect> controls;  // the panel's layout in the last frame
+    std::string command;                   // the command line it showed at the end
+};
+
+// The mouse in one frame: over a point with the left button up or held.
+std::string hover(const std::string& point) {
+    return point + " 0";
+}
+std::string hold(const std::string& point) {
+    return point + " 1";
+}
+
+const std::vector<std::string> kSize = {"--size", "640x360"};
+
+// `sample` headless with the panel driven by `script` (a frame a line, then one frame more
+// without the mouse: the frame after the last change).
+PanelRun runScripted(const std::string& sample, const std::vector<std::string>& script,
+                     const fs::path& dir, const std::string& name,
+                     const std::vector<std::string>& args = {}) {
+    const fs::path scriptPath = dir / (name + ".script");
+    {
+        std::ofstream out(scriptPath);
+        for (const std::string& line : script) out << line << "\n";
+    }
+    PanelRun result;
+    result.image = dir / (name + ".png");
+    std::vector<std::string> argv = {sample, "--headless", "--frames",
+                                     std::to_string(script.size() + 1), "--output",
+                                     result.image.string()};
+    argv.insert(argv.end(), kSize.begin(), kSize.end());
+    argv.insert(argv.end(), args.begin(), args.end());
+    result.run = runSample(argv, {.setEnv = {{"PBR_PANEL_SCRIPT", scriptPath.string()}}});
+    std::istringstream out(result.run.out);
+    const std::string panelMark = sample + ": panel: ", commandMark = sample + ": command: ";
+    for (std::string line; std::getline(out, line);) {
+        if (line.rfind(panelMark, 0) == 0) {
+            // "<id> x y w h", the id possibly with spaces ("--lights -")
+            std::istringstream fields(line.substr(panelMark.size()));
+            std::vector<std::string> words;
+            for (std::string word; fields >> word;) words.push_back(word);
+            if (words.size() < 5) continue;
+            Rect rect{std::stoi(words[words.size() - 4]), std::stoi(words[words.size() - 3]),
+                      std::stoi(words[words.size() - 2]), std::stoi(words[words.size() - 1])};
+            std::string id;
+            for (size_t i = 0; i + 4 < words.size(); ++i) id += (i ? " " : "") + words[i];
+            result.controls[id] = rect;
+        } else if (line.rfind(commandMark, 0) == 0) {
+            result.command = line.substr(commandMark.size());
+        }
+    }
+    return result;
+}
+
+std::vector<std::string> wordsOf(const std::string& command) {
+    std::istringstream in(command);
+    std::vector<std::string> words;
+    for (std::string word; in >> word;) words.push_back(word);
+    return words;
+}
+
+// The value the command line gives a flag ("" when it names the flag without one, nullopt when
+// it does not name it).
+std::optional<std::string> valueIn(const std::string& command, const std::string& flag) {
+    const std::vector<std::string> words = wordsOf(command);
+    for (size_t i = 0; i < words.size(); ++i) {
+        if (words[i] != flag) continue;
+        if (i + 1 < words.size() && words[i + 1].rfind("--", 0) != 0) return words[i + 1];
+        return std::string();
+    }
+    return std::nullopt;
+}
+
+// Runs the command the panel showed, headless, into `output`; the bytes of its picture.
+std::string drawCommand(const std::string& command, const fs::path& output) {
+    std::vector<std::string> argv = wordsOf(command);
+    EXPECT_FALSE(argv.empty());
+    if (argv.empty()) return {};
+    argv.insert(argv.end(), {"--headless", "--output", output.string()});
+    const RunResult run = runSample(argv);
+    EXPECT_EQ(run.exitCode, 0) << command << "\n" << run.err;
+    return readBytes(output);
+}
+
+// The panel's layout at the start: one frame, no mouse.
+std::map<std::string, Rect> layoutOf(const std::string& sample, const fs::path& dir,
+                                     const std::vector<std::string>& args = {}) {
+    const PanelRun run = runScripted(sample, {"-"}, dir, "layout", args);
+    EXPECT_EQ(run.run.exitCode, 0) << run.run.err;
+    return run.controls;
+}
+
+// The run after a change: clean, its frame that of the command it shows, and not the default
+// picture (the change showed).
+void expectFrameIsTheCommands(const PanelRun& changed, const fs::path& dir) {
+    ASSERT_EQ(changed.run.exitCode, 0) << changed.run.err;
+    EXPECT_EQ(changed.run.err.find("GL error"), std::string::npos) << changed.run.err;
+    const std::string frame = readBytes(changed.image);
+    ASSERT_FALSE(frame.empty());
+    EXPECT_TRUE(frame == drawCommand(changed.command, dir / "command.png"))
+        << "the frame after the change is not what `" << changed.command << "` draws";
+    const PanelRun untouched = runScripted(wordsOf(changed.command)[0], {"-"}, dir, "untouched");
+    EXPECT_FALSE(frame == readBytes(untouched.image)) << "the change did not show";
+}
+
+TEST(Panel, DraggingASliderIsTheFlagsValue) {
+    const fs::path dir = testOutputDir("panel_slider");
+    const auto controls = layoutOf("01_lighting", dir);
+    ASSERT_TRUE(controls.count("--roughness-offset")) << "no slider for --roughness-offset";
+    const Rect slider = controls.at("--roughness-offset");
+    // Press on the grab (0 sits in the middle of -1..1) and drag it to 80 % of the way.
+    const PanelRun changed = runScripted(
+        "01_lighting",
+        {"-", hover(slider.at(0.5)), hold(slider.at(0.5)), hold(slider.at(0.65)),
+         hold(slider.at(0.8)), hover(slider.at(0.8))},
+        dir, "dragged");
+    std::printf("after the drag: %s\n", changed.command.c_str());
+    const auto value = valueIn(changed.command, "--roughness-offset");
+    ASSERT_TRUE(value) << "the drag did not set --roughness-offset: " << changed.command;
+    // 80 % of the slider's travel from -1 to 1 (the grab's width takes a few pixels off)
+    EXPECT_NEAR(std::strtod(value->c_str(), nullptr), 0.6, 0.05);
+    EXPECT_FALSE(valueIn(changed.command, "--metallic-offset")) << changed.command;
+    expectFrameIsTheCommands(changed, dir);
+}
+
+TEST(Panel, AStepperStepsTheFlag) {
+    const fs::path dir = testOutputDir("panel_stepper");
+    const auto controls = layoutOf("01_lighting", dir);
+    ASSERT_TRUE(controls.count("--lights -")) << "no stepper for --lights";
+    const std::string minus = controls.at("--lights -").at(0.5);
+    // Two clicks on "-": 4 lights, then 3, then 2.
+    const PanelRun changed =
+        runScripted("01_lighting",
+                    {"-", hover(minus), hold(minus), hover(minus), hold(minus), hover(minus)}, dir,
+                    "stepped");
+    std::printf("after two clicks: %s\n", changed.command.c_str());
+    EXPECT_EQ(valueIn(changed.command, "--lights"), "2") << changed.command;
+    expectFrameIsTheCommands(changed, dir);
+}
+
+TEST(Panel, AComboBoxChoiceIsTheFlagsWord) {
+    const fs::path dir = testOutputDir("panel_combo");
+    const auto controls = layoutOf("01_lighting", dir);
+    ASSERT_TRUE(controls.count("--view")) << "no combo box for --view";
+    const std::string combo = controls.at("--view").at(0.5);
+    // A click opens the list; its items are laid out in the frame after.
+    const std::vector<std::string> open = {"-", hover(combo), hold(combo), hover(combo)};
+    const PanelRun opened = runScripted("01_lighting", open, dir, "opened");
+    ASSERT_TRUE(opened.controls.count("--view=d")) << "the list did not open:\n" << opened.run.out;
+    const std::string item = opened.controls.at("--view=d").at(0.5);
+    std::vector<std::string> choose = open;
+    choose.insert(choose.end(), {hover(item), hold(item), hover(item)});
+    const PanelRun changed = runScripted("01_lighting", choose, dir, "chosen");
+    std::printf("after the choice: %s\n", changed.command.c_str());
+    EXPECT_EQ(valueIn(changed.command, "--view"), "d") << changed.command;
+    expectFrameIsTheCommands(changed, dir);
+}
+
+// 07: a checkbox, and the orbit camera's place on the command line (x,y,z only).
+TEST(Panel, ACheckboxSwitchesTheFlag) {
+    const fs::path dir = testOutputDir("panel_checkbox");
+    const auto controls = layoutOf("07_gltf_metallic_roughness", dir);
+    ASSERT_TRUE(controls.count("--no-punctual")) << "no checkbox for --no-punctual";
+    const std::string box = controls.at("--no-punctual").at(0.1);
+    const PanelRun changed = runScripted("07_gltf_metallic_roughness",
+                                         {"-", hover(box), hold(box), hover(box)}, dir, "switched");
+    std::printf("after the click: %s\n", changed.command.c_str());
+    EXPECT_EQ(valueIn(changed.command, "--no-punctual"), "") << changed.command;
+    EXPECT_FALSE(valueIn(changed.command, "--no-ibl")) << changed.command;
+    expectFrameIsTheCommands(changed, dir);
+}
+
+// The mouse over the panel is the panel's: the same drag outside it turns the camera.
+TEST(Panel, TheMouseOverThePanelLeavesTheCameraAlone) {
+    const fs::path dir = testOutputDir("panel_camera");
+    const auto controls = layoutOf("01_lighting", dir);
+    ASSERT_TRUE(controls.count("--roughness-offset"));
+    const Rect slider = controls.at("--roughness-offset");
+    const PanelRun onPanel = runScripted(
+        "01_lighting", {"-", hover(slider.at(0.5)), hold(slider.at(0.5)), hold(slider.at(0.52))},
+        dir, "on_panel");
+    EXPECT_EQ(valueIn(onPanel.command, "--camera"), "0,0,23,-90,0") << onPanel.command;
+    const PanelRun outside =
+        runScripted("01_lighting", {"-", "500 300 0", "500 300 1", "540 300 1"}, dir, "outside");
+    EXPECT_NE(valueIn(outside.command, "--camera"), "0,0,23,-90,0")
+        << "a drag over the picture should turn the camera: " << outside.command;
+}
+
+}  // namespace
+}  // namespace pbr::test
