@@ -109,7 +109,8 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (!options_.headless) {
         std::string whyNot;
         context_ = createGlfwContext(config_.title, options_.width, options_.height,
-                                     !options_.benchmark, !config_.orbitCamera, whyNot);
+                                     !options_.benchmark,
+                                     !config_.orbitCamera && !config_.fixedView, whyNot);
         if (!context_ && offscreenBackends().empty()) {
             throw Error(config_.name + ": " + whyNot +
                         ", and this build has no offscreen backend (built without OSMesa and EGL)");
@@ -171,7 +172,9 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
         });
         panelShown_ = !(context_->windowed() && options_.benchmark);
     }
-    if (context_->windowed() && !config_.orbitCamera) context_->setCursorCaptured(mouseLook());
+    if (context_->windowed() && !config_.orbitCamera && !config_.fixedView) {
+        context_->setCursorCaptured(mouseLook());
+    }
     checkGlErrors("start-up");
 }
 
@@ -277,6 +280,42 @@ Shader& App::shader(const std::string& vertex, const std::string& fragment,
     return made;
 }
 
+void App::label(const glm::vec2& pixel, const std::string& text) {
+    if (panel_) panel_->label(pixel, text);
+}
+
+void App::label(const glm::vec3& world, const std::string& text) {
+    if (!panel_) return;
+    const glm::vec4 clip = projection() * view() * glm::vec4(world, 1.0f);
+    if (clip.w <= 0.0f) return;  // behind the camera
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    panel_->label({(0.5f + 0.5f * ndc.x) * float(width()), (0.5f - 0.5f * ndc.y) * float(height())},
+                  text);
+}
+
+void labelSphereGrid(App& app, const SphereGrid& grid, float roughnessOffset,
+                     float metallicOffset) {
+    // Metallic up the rows, at the left; roughness across the columns, underneath.
+    auto number = [](float value) {
+        char text[16];
+        std::snprintf(text, sizeof text, "%.2f", value);
+        return std::string(text);
+    };
+    const float x = grid.position(0, 0).x - 0.9f * grid.spacing;
+    for (int row = 0; row < grid.nrRows; ++row) {
+        const glm::vec3 at = grid.position(row, 0);
+        const float metallic = std::clamp(float(row) / float(grid.nrRows) + metallicOffset, 0.0f, 1.0f);
+        app.label(glm::vec3(x, at.y, at.z), "metallic " + number(metallic));
+    }
+    const float y = grid.position(0, 0).y - 0.52f * grid.spacing;  // just under the bottom row
+    app.label(glm::vec3(x, y, grid.z), "roughness");
+    for (int col = 0; col < grid.nrColumns; ++col) {
+        const glm::vec3 at = grid.position(0, col);
+        app.label(glm::vec3(at.x, y, at.z),
+                  number(std::clamp(float(col) / float(grid.nrColumns) + roughnessOffset, 0.05f, 1.0f)));
+    }
+}
+
 std::string App::commandLine() const {
     // A value with characters a shell would take apart is quoted.
     auto quoted = [](const std::string& text) {
@@ -291,9 +330,11 @@ std::string App::commandLine() const {
     std::string line = program_ + " --size " + std::to_string(width()) + "x" +
                        std::to_string(height());
     const glm::vec3 eye = cameraPosition();
-    line += " --camera " + flagNumberText(eye.x) + "," + flagNumberText(eye.y) + "," +
-            flagNumberText(eye.z);
-    if (!orbit_ && !config_.orbitCamera) {
+    if (!config_.fixedView) {
+        line += " --camera " + flagNumberText(eye.x) + "," + flagNumberText(eye.y) + "," +
+                flagNumberText(eye.z);
+    }
+    if (!orbit_ && !config_.orbitCamera && !config_.fixedView) {
         line += "," + flagNumberText(camera_.yaw()) + "," + flagNumberText(camera_.pitch());
     }
     if (paused_) {
@@ -348,7 +389,9 @@ bool App::nextFrame() {
     }
     if (input.togglePanel && panel_) {
         panelShown_ = !panelShown_;
-        if (context_->windowed() && !config_.orbitCamera) context_->setCursorCaptured(mouseLook());
+        if (context_->windowed() && !config_.orbitCamera && !config_.fixedView) {
+        context_->setCursorCaptured(mouseLook());
+    }
     }
 
     const double now = context_->seconds();
@@ -367,6 +410,11 @@ bool App::nextFrame() {
     } else {
         time_ = headless() ? 0.0f : float(now - startSeconds_);
     }
+    cursor_.reset();
+    if (!panelHasMouse_ && input.cursor.x >= 0.0f && input.cursor.y >= 0.0f &&
+        input.cursor.x < float(width()) && input.cursor.y < float(height())) {
+        cursor_ = input.cursor;
+    }
     if (panelHasMouse_) {
         // The mouse works the panel: it neither turns nor moves the camera.
         input.mouseDelta = input.dragDelta = glm::vec2(0.0f);
@@ -378,7 +426,8 @@ bool App::nextFrame() {
         // Left drag orbits, scroll dollies; the cursor is free (AppConfig::orbitCamera).
         if (input.dragDelta != glm::vec2(0.0f)) orbit_->orbit(input.dragDelta.x, input.dragDelta.y);
         if (input.scroll != 0.0f) orbit_->dolly(input.scroll);
-    } else if (!config_.orbitCamera) {  // (an orbit sample before useOrbitCamera: no camera moves)
+    } else if (!config_.orbitCamera && !config_.fixedView) {
+        // (no camera moves in an orbit sample before useOrbitCamera, nor in a fixed view)
         // A held key moves the camera by the frame's time, but by a quarter second's worth at
         // most: a long frame (a shader reload, a busy machine, the browser's first frames) does
         // not throw the camera far past what the learner was looking at.
@@ -416,18 +465,18 @@ bool App::nextFrame() {
 
 void App::updatePanel(const InputFrame& input) {
     panelHasMouse_ = false;
-    if (!panel_ || !panelShown_) return;
+    if (!panel_) return;
     PanelStatus status{.title = config_.title,
                        .commandLine = commandLine(),
                        .frameMilliseconds = headless() ? -1.0 : shownFrameMilliseconds_,
                        .paused = paused_};
     // Headless (a script, --panel) the panel's clock is a steady 60 frames a second.
     const float delta = headless() || deltaTime_ <= 0.0f ? 1.0f / 60.0f : deltaTime_;
-    panel_->update({.cursor = input.cursor,
-                    .leftButton = input.leftButton,
-                    .scroll = input.scroll,
-                    .deltaSeconds = delta},
-                   {width(), height()}, options_.sampleFlags, status);
+    panel_->begin({.cursor = input.cursor,
+                   .leftButton = input.leftButton,
+                   .scroll = input.scroll,
+                   .deltaSeconds = delta},
+                  {width(), height()}, options_.sampleFlags, status, panelShown_);
     panelHasMouse_ = panel_->wantsMouse();
     if (status.pauseClicked) {
         if (paused_) {
@@ -448,9 +497,15 @@ void App::updatePanel(const InputFrame& input) {
 }
 
 void App::endFrame() {
-    // --panel: the panel is part of the picture; in a window it is drawn over the picture shown,
-    // and F12 writes what a headless run writes.
-    const bool panelInPicture = panel_ && panelShown_ && options_.panel;
+    for (Shader& shader : shaders_) {
+        if (const std::string note = shader.takeInactiveNote(); !note.empty()) {
+            std::fprintf(stderr, "%s\n", note.c_str());
+        }
+    }
+    // --panel: the panel and the labels are part of the picture; in a window they are drawn over
+    // the picture shown, and F12 writes what a headless run writes.
+    if (panel_) panel_->end();
+    const bool panelInPicture = panel_ && options_.panel;
     target_->resolve();
     if (panelInPicture) {
         target_->bindResolved();
@@ -463,7 +518,7 @@ void App::endFrame() {
     if (context_->windowed()) {
         const glm::ivec2 size = context_->framebufferSize();
         target_->blitToDefault(size.x, size.y);
-        if (panel_ && panelShown_ && !panelInPicture) {
+        if (panel_ && !panelInPicture) {
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, size.x, size.y);
             panel_->draw();

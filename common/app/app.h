@@ -26,6 +26,7 @@
 #include "gl/framebuffer.h"
 #include "gl/shader.h"
 #include "math/camera.h"
+#include "math/sphere_grid.h"
 
 namespace pbr {
 
@@ -44,6 +45,9 @@ struct AppConfig {
     // x,y,z only: yaw and pitch are refused as a bad flag, before any context exists, since the
     // orbit camera always looks at the model's centre.
     bool orbitCamera = false;
+    // The sample draws a fixed picture with no camera (06's LUT): in a window the cursor stays
+    // free and neither keys nor mouse move anything; the command line names no --camera.
+    bool fixedView = false;
 };
 
 class App {
@@ -105,6 +109,12 @@ public:
     Shader& shader(const std::string& vertex, const std::string& fragment,
                    std::vector<std::string> defines = {});
 
+    // A label over the picture, drawn by the panel's layer (in a window; headless with --panel
+    // only): at a pixel from the top-left, or at a point of the scene, centred there. Call it
+    // between nextFrame() and the end of the frame.
+    void label(const glm::vec2& pixel, const std::string& text);
+    void label(const glm::vec3& world, const std::string& text);
+
     // The command that draws what is on screen now: the program, the size, the camera, the time
     // when it is paused or fixed, and the sample's flags as they stand (the panel's changes
     // included). The panel shows it; a scripted run prints it.
@@ -118,6 +128,9 @@ public:
     int height() const { return target_->height(); }
     float aspect() const { return float(width()) / float(height()); }
     float time() const { return time_; }            // seconds; fixed when headless
+    // The mouse over the picture this frame, in pixels from the top-left (a window's, or a
+    // panel script's), when it is over the picture and not over the panel.
+    std::optional<glm::vec2> cursor() const { return cursor_; }
     float deltaTime() const { return deltaTime_; }  // seconds since the last frame
     int frameIndex() const { return frameIndex_; }  // 0 for the first frame
     std::string renderer() const;
@@ -147,6 +160,7 @@ private:
     std::unique_ptr<Panel> panel_;  // made when the build has Dear ImGui and a panel is wanted
     bool panelShown_ = false;
     bool panelHasMouse_ = false;  // this frame's mouse is the panel's, not the camera's
+    std::optional<glm::vec2> cursor_;
     bool scripted_ = false;
     std::vector<InputFrame> script_;  // PBR_PANEL_SCRIPT: the mouse of each frame, headless
     double shownFrameMilliseconds_ = 0.0;
@@ -180,5 +194,11 @@ private:
                                             const void* user);
 #endif
 };
+
+// The axes of the text's grid, as labels beside it: metallic up the rows (row / rows + the
+// offset, in [0, 1]), roughness across the columns (column / columns + the offset, in [0.05, 1]:
+// the samples' own clamps).
+void labelSphereGrid(App& app, const SphereGrid& grid, float roughnessOffset = 0.0f,
+                     float metallicOffset = 0.0f);
 
 }  // namespace pbr

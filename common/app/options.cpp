@@ -155,10 +155,8 @@ void checkSampleFlag(const FlagSpec& spec, const std::string& value) {
             break;
         case FlagSpec::Kind::Choice:
             if (std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
-                std::string list;
-                for (const std::string& choice : spec.choices)
-                    list += (list.empty() ? "" : " or ") + choice;
-                fail(spec.name + ": " + inQuotes(value) + " is not " + list);
+                // The choices as the usage lists them ("--filter trilinear|nearest").
+                fail(spec.name + ": " + inQuotes(value) + " is not one of " + spec.valueName);
             }
             break;
     }

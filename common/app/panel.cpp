@@ -22,10 +22,12 @@ bool Panel::available() {
 }
 Panel::Panel(std::vector<FlagSpec>, std::function<void(const std::string&)>) {}
 Panel::~Panel() = default;
-std::vector<std::string> Panel::update(const PanelInput&, glm::ivec2,
-                                       std::map<std::string, std::string>&, PanelStatus&) {
+std::vector<std::string> Panel::begin(const PanelInput&, glm::ivec2,
+                                      std::map<std::string, std::string>&, PanelStatus&, bool) {
     return {};
 }
+void Panel::label(glm::vec2, const std::string&) {}
+void Panel::end() {}
 bool Panel::wantsMouse() const {
     return false;
 }
@@ -225,24 +227,41 @@ Panel::~Panel() {
     ImGui::DestroyContext(state_->context);
 }
 
-std::vector<std::string> Panel::update(const PanelInput& input, glm::ivec2 size,
-                                       std::map<std::string, std::string>& values,
-                                       PanelStatus& status) {
+std::vector<std::string> Panel::begin(const PanelInput& input, glm::ivec2 size,
+                                      std::map<std::string, std::string>& values,
+                                      PanelStatus& status, bool showPanel) {
     // Dear ImGui sizes a new window in its first frame and shows it from the second: the first
-    // update lays the panel out twice, so that a one-frame headless picture (--panel) shows it.
-    if (!state_->laidOut) {
+    // frame lays the panel out twice, so that a one-frame headless picture (--panel) shows it.
+    if (!state_->laidOut && showPanel) {
         state_->laidOut = true;
         PanelStatus first = status;
         PanelInput still = input;
         still.leftButton = false;
-        layoutFrame(still, size, values, first);
+        layoutFrame(still, size, values, first, true);
+        end();
     }
-    return layoutFrame(input, size, values, status);
+    return layoutFrame(input, size, values, status, showPanel);
+}
+
+void Panel::label(glm::vec2 pixel, const std::string& text) {
+    ImGui::SetCurrentContext(state_->context);
+    ImDrawList* list = ImGui::GetBackgroundDrawList();  // under the panel
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    const ImVec2 at(std::round(pixel.x - 0.5f * size.x), std::round(pixel.y - 0.5f * size.y));
+    // light text on a dark box, readable over any picture
+    list->AddRectFilled(ImVec2(at.x - 3.0f, at.y - 1.0f), ImVec2(at.x + size.x + 3.0f, at.y + size.y + 1.0f),
+                        IM_COL32(0, 0, 0, 150), 3.0f);
+    list->AddText(at, IM_COL32(235, 235, 235, 255), text.c_str());
+}
+
+void Panel::end() {
+    ImGui::SetCurrentContext(state_->context);
+    ImGui::Render();
 }
 
 std::vector<std::string> Panel::layoutFrame(const PanelInput& input, glm::ivec2 size,
                                             std::map<std::string, std::string>& values,
-                                            PanelStatus& status) {
+                                            PanelStatus& status, bool showPanel) {
     ImGui::SetCurrentContext(state_->context);
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(float(std::max(size.x, 1)), float(std::max(size.y, 1)));
@@ -257,6 +276,8 @@ std::vector<std::string> Panel::layoutFrame(const PanelInput& input, glm::ivec2 
     ImGui::NewFrame();
     state_->layout.str("");
     std::vector<std::string> changed;
+    state_->wantsMouse = showPanel && io.WantCaptureMouse;
+    if (!showPanel) return changed;
 
     ImGui::SetNextWindowPos(ImVec2(kMargin, kMargin), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.0f), ImGuiCond_FirstUseEver);
@@ -289,8 +310,6 @@ std::vector<std::string> Panel::layoutFrame(const PanelInput& input, glm::ivec2 
     state_->noteItem("copy");
     ImGui::PopItemWidth();
     ImGui::End();
-    ImGui::Render();
-    state_->wantsMouse = io.WantCaptureMouse;
     return changed;
 }
 

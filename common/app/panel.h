@@ -54,12 +54,17 @@ public:
     Panel(const Panel&) = delete;
     Panel& operator=(const Panel&) = delete;
 
-    // Lays out this frame's panel over a picture of `size` pixels. A control the input moved
-    // writes its flag's new text into `values` (a switch that is off, and a flag at its default
-    // that was never given, are absent); returns the names of the flags it changed.
-    std::vector<std::string> update(const PanelInput& input, glm::ivec2 size,
-                                    std::map<std::string, std::string>& values,
-                                    PanelStatus& status);
+    // Starts this frame's layer over a picture of `size` pixels and lays out the panel (unless
+    // `showPanel` is false: labels only). A control the input moved writes its flag's new text
+    // into `values` (a switch that is off, and a flag at its default that was never given, are
+    // absent); returns the names of the flags it changed. Labels may be added until end().
+    std::vector<std::string> begin(const PanelInput& input, glm::ivec2 size,
+                                   std::map<std::string, std::string>& values, PanelStatus& status,
+                                   bool showPanel = true);
+    // A label over the picture at `pixel` (from the top-left), centred there.
+    void label(glm::vec2 pixel, const std::string& text);
+    // Ends the frame's layer: what draw() draws.
+    void end();
     // The cursor is over the panel, or one of its controls holds the mouse (a slider dragged
     // past the panel's edge): the camera leaves the mouse alone.
     bool wantsMouse() const;
@@ -74,7 +79,7 @@ public:
 private:
     std::vector<std::string> layoutFrame(const PanelInput& input, glm::ivec2 size,
                                          std::map<std::string, std::string>& values,
-                                         PanelStatus& status);
+                                         PanelStatus& status, bool showPanel);
     struct State;
     std::unique_ptr<State> state_;
 };

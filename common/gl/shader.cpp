@@ -291,20 +291,30 @@ bool Shader::reload() {
         return false;
     }
     locations_.clear();
+    unreportedInactive_.clear();
     useProgram(program_.id());
     for (const auto& [name, value] : values_) apply(location(name), value);
     return true;
+}
+
+std::string Shader::takeInactiveNote() {
+    if (unreportedInactive_.empty()) return {};
+    std::string names;
+    for (const std::string& uniform : unreportedInactive_) {
+        names += (names.empty() ? "'" : ", '") + uniform + "'";
+    }
+    unreportedInactive_.clear();
+    return "note: " + name() + ": no active uniform " + names +
+           " (set, but misspelt or unused by this program)";
 }
 
 GLint Shader::location(const std::string& uniform) {
     auto found = locations_.find(uniform);
     if (found != locations_.end()) return found->second;
     const GLint where = glGetUniformLocation(program_.id(), uniform.c_str());
-    if (where < 0) {
-        // A misspelt name is a classic silent bug; say so once. (A uniform the compiler removed
-        // because it is unused also lands here.)
-        std::fprintf(stderr, "note: %s: no active uniform '%s'\n", name().c_str(), uniform.c_str());
-    }
+    // A misspelt name is a classic silent bug; it is said once (takeInactiveNote). A uniform
+    // the compiler removed because it is unused also lands here.
+    if (where < 0) unreportedInactive_.push_back(uniform);
     locations_.emplace(uniform, where);
     return where;
 }

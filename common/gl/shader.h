@@ -67,6 +67,12 @@ public:
     GLuint id() const { return program_.id(); }
     std::string name() const;
 
+    // The uniforms set on this program that it does not have (misspelt, or unused by this code
+    // and removed by the compiler), not yet reported: one note line naming them all, or "" when
+    // there are none. The App prints it after each frame, so a reload or a new view gives one
+    // line, not one per uniform.
+    std::string takeInactiveNote();
+
 private:
     using Value = std::variant<int, float, glm::vec2, glm::vec3, glm::vec4, glm::mat3, glm::mat4>;
     GLint location(const std::string& uniform);
@@ -77,6 +83,7 @@ private:
     std::vector<std::string> defines_;
     GlProgram program_;
     std::unordered_map<std::string, GLint> locations_;
+    std::vector<std::string> unreportedInactive_;
     std::map<std::string, Value> values_;
 };
 

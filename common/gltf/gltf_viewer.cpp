@@ -153,6 +153,12 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
             skybox.draw(environment->environmentMap(), app.view(), app.projection());
         }
         renderer->draw(gpuModel, glm::mat4(1.0f), app.view());
+        if (!app.flag("--model")) {
+            for (const GltfViewerConfig::Label& label : config.defaultModelLabels) {
+                app.label(model.boundsMin + label.atBounds * (model.boundsMax - model.boundsMin),
+                          label.text);
+            }
+        }
     }
     return 0;
 }

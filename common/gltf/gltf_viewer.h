@@ -6,6 +6,9 @@
 // its default asset.
 #include <filesystem>
 #include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 namespace pbr {
 
@@ -14,6 +17,13 @@ struct GltfViewerConfig {
     std::string title;                    // the window's
     std::filesystem::path defaultModel;   // drawn without --model
     std::string defaultModelDescription;  // for --help: "the project's PBR showcase"
+    // Labels over the default model, in a window (and with --panel): each at a point given as
+    // fractions of the model's bounds ({0.5, 1, 0.5}: above the middle).
+    struct Label {
+        glm::vec3 atBounds;
+        std::string text;
+    };
+    std::vector<Label> defaultModelLabels{};
 };
 
 // Runs the sample to its end; returns the exit code. Throws Error for bad input (the caller's

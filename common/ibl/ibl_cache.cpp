@@ -1,6 +1,8 @@
 #include "ibl/ibl_cache.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 
 #include "base/error.h"
 #include "base/paths.h"
@@ -240,6 +242,27 @@ TextureCube IblEnvironment::irradianceMap(int size, float sampleDelta) {
 TextureCube IblEnvironment::prefilteredMap(int size, int levels, int samples) {
     return cache_.cube(prefilteredFile(size, levels, samples),
                        [&] { return prefilterSpecular(environmentMap(), size, levels, samples); });
+}
+
+LutTexel lutTexel(const KtxImage& lut, float u, float v) {
+    if (lut.images.empty() || lut.width <= 0 || lut.height <= 0) return {};
+    const int x = std::clamp(int(u * float(lut.width)), 0, lut.width - 1);
+    const int y = std::clamp(int(v * float(lut.height)), 0, lut.height - 1);  // row 0: v = 0
+    const int channels = lut.channels(), bytes = lut.bytesPerChannel();
+    const std::uint8_t* texel =
+        lut.images[0].data() + (size_t(y) * size_t(lut.width) + size_t(x)) * size_t(channels * bytes);
+    auto channel = [&](int c) {
+        if (c >= channels) return 0.0f;
+        if (bytes == 2) {
+            std::uint16_t half = 0;
+            std::memcpy(&half, texel + 2 * c, 2);
+            return halfToFloat(half);
+        }
+        float value = 0.0f;
+        std::memcpy(&value, texel + 4 * c, 4);
+        return value;
+    };
+    return {channel(0), channel(1), channel(2)};
 }
 
 KtxFormat brdfLutFormat(BrdfLutChannels channels) {

@@ -98,4 +98,11 @@ Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channe
 MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels);
 KtxFormat brdfLutFormat(BrdfLutChannels channels);
 
+// One texel of a BRDF LUT read back (nearest to u = NdotV, v = roughness, both in [0, 1]): the
+// split sum's scale and bias, and the sheen where the table has it (else 0).
+struct LutTexel {
+    float scale = 0.0f, bias = 0.0f, sheen = 0.0f;
+};
+LutTexel lutTexel(const KtxImage& lut, float u, float v);
+
 }  // namespace pbr

@@ -89,6 +89,8 @@ int main(int argc, char** argv) try {
                                        glm::vec3(0.5f)));
             sphere.draw();
         }
+        // The axes, in a window (and with --panel).
+        pbr::labelSphereGrid(app, grid, roughnessOffset, metallicOffset);
     }
     return 0;
 } catch (...) {

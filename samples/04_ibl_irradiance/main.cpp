@@ -77,6 +77,8 @@ int main(int argc, char** argv) try {
             }
         }
 
+        pbr::labelSphereGrid(app, grid);  // the axes, in a window (and with --panel)
+
         // Last: only where nothing is.
         const bool irradianceSky = app.flagChoice("--background") == "irradiance";
         skybox.draw(irradianceSky ? irradianceMap : environmentMap, app.view(), app.projection());

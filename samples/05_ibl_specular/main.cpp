@@ -130,6 +130,14 @@ int main(int argc, char** argv) try {
                 }
             }
         }
+        // In a window (and with --panel): the grid's axes, or the material sets' names.
+        if (textured) {
+            for (int col = 0; col < row.nrColumns; ++col) {
+                app.label(row.position(0, col) - glm::vec3(0.0f, 1.4f, 0.0f), kMaterials[size_t(col)]);
+            }
+        } else {
+            pbr::labelSphereGrid(app, grid);
+        }
 
         // Last: only where nothing is.
         const std::string background = app.flagChoice("--background");

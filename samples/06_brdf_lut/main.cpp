@@ -2,6 +2,7 @@
 // BRDF lookup table (256^2, R/G = GGX scale and bias, B = Charlie sheen) and, given --hdr, an
 // environment's irradiance and prefiltered specular maps, writes them as KTX 1 files, and shows
 // the LUT. See README.md beside this file.
+#include <cstdio>
 #include <filesystem>
 #include <utility>
 
@@ -25,7 +26,8 @@ int main(int argc, char** argv) try {
                  "an existing folder for the .ktx files (default: the folder of --output, "
                  "else the current folder)"),
              pbr::FlagSpec::toggle("--no-cache",
-                                   "compute the maps even when the cache holds them")}});
+                                   "compute the maps even when the cache holds them")},
+         .fixedView = true});  // two panels of the table, no camera
     const std::filesystem::path output = app.options().output;
     const std::filesystem::path ktxDir =
         app.flag("--ktx-dir")
@@ -39,7 +41,8 @@ int main(int argc, char** argv) try {
     };
     constexpr auto kChannels = pbr::BrdfLutChannels::ScaleBiasSheen;
     const pbr::Texture2D brdfLUT = pbr::brdfLut(cache, 256, 1024, kChannels);
-    bake(pbr::brdfLutFile(256, 1024, kChannels), brdfLUT.toKtx(pbr::brdfLutFormat(kChannels)));
+    const pbr::KtxImage lutImage = brdfLUT.toKtx(pbr::brdfLutFormat(kChannels));
+    bake(pbr::brdfLutFile(256, 1024, kChannels), lutImage);
     if (const auto hdr = app.flag("--hdr")) {
         pbr::IblEnvironment environment(cache, *hdr);
         bake(environment.irradianceFile(32), environment.irradianceMap(32).toKtx());
@@ -68,6 +71,31 @@ int main(int argc, char** argv) try {
             quad.draw();
         }
         glViewport(0, 0, app.width(), app.height());
+
+        // In a window (and with --panel): what each panel and axis is, and the table's value
+        // under the cursor.
+        const int top = app.height() - bottom - side;  // from the top, as labels count
+        for (int panel = 0; panel < 2; ++panel) {
+            const float x0 = float(left + panel * (side + gap)), mid = x0 + 0.5f * float(side);
+            app.label({mid, float(top) - 12.0f},
+                      panel == 0 ? "GGX scale (red) and bias (green)" : "Charlie sheen (blue)");
+            app.label({mid, float(top + side) + 12.0f}, "NdotV: 0 at the left, 1 at the right");
+            app.label({x0 + 56.0f, float(top) + 12.0f}, "roughness 1");
+            app.label({x0 + 56.0f, float(top + side) - 12.0f}, "roughness 0");
+        }
+        if (const auto cursor = app.cursor()) {
+            for (int panel = 0; panel < 2; ++panel) {
+                const float u = (cursor->x - float(left + panel * (side + gap))) / float(side);
+                const float v = 1.0f - (cursor->y - float(top)) / float(side);
+                if (u < 0.0f || u >= 1.0f || v < 0.0f || v >= 1.0f) continue;
+                const pbr::LutTexel texel = pbr::lutTexel(lutImage, u, v);
+                char text[160];
+                std::snprintf(text, sizeof text,
+                              "NdotV %.3f, roughness %.3f\nscale %.4f, bias %.4f, sheen %.4f", u,
+                              v, texel.scale, texel.bias, texel.sheen);
+                app.label(*cursor + glm::vec2(0.0f, 36.0f), text);
+            }
+        }
     }
     return 0;
 } catch (...) {

@@ -14,7 +14,9 @@ int main(int argc, char** argv) try {
         {.name = "08_gltf_specular_glossiness",
          .title = "08 glTF specular-glossiness",
          .defaultModel = pbr::modelDir() / "pbr_workflows.gltf",
-         .defaultModelDescription = "the project's two-workflow spheres"});
+         .defaultModelDescription = "the project's two-workflow spheres",
+         .defaultModelLabels = {{{0.25f, 1.12f, 0.5f}, "metallic-roughness"},
+                                {{0.75f, 1.12f, 0.5f}, "specular-glossiness"}}});
 } catch (...) {
     return pbr::reportFailure();
 }

@@ -124,7 +124,7 @@ TEST(Options, SampleFlagValuesAreCheckedByTheirKind) {
               "--roughness-offset: 'nan' is not a finite number");
     EXPECT_EQ(errorOf({"--roughness-offset", "2"}),
               "--roughness-offset: 2 is out of range [-1, 1]");
-    EXPECT_EQ(errorOf({"--filter", "foo"}), "--filter: 'foo' is not trilinear or nearest");
+    EXPECT_EQ(errorOf({"--filter", "foo"}), "--filter: 'foo' is not one of trilinear|nearest");
     EXPECT_EQ(errorOf({"--model", ""}), "--model: empty value");
     EXPECT_EQ(errorOf({"--ktx-dir="}), "--ktx-dir: empty value");
     const Options o = parse({"--roughness-offset", "-0.25", "--filter", "nearest"});
