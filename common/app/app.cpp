@@ -182,15 +182,18 @@ bool App::mouseLook() const {
     return !(panel_ && panelShown_);
 }
 
-void App::useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax) {
+void App::useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax,
+                         std::optional<glm::vec3> start) {
     if (!config_.orbitCamera) {
         throw Error(config_.name +
                     ": useOrbitCamera needs AppConfig::orbitCamera = true (so that --camera is "
                     "checked before any context, and the window leaves the cursor free)");
     }
     if (options_.camera) {
-        const CameraStart& start = *options_.camera;
-        orbit_ = OrbitCamera::fromPosition(boundsMin, boundsMax, {start.x, start.y, start.z});
+        const CameraStart& given = *options_.camera;
+        orbit_ = OrbitCamera::fromPosition(boundsMin, boundsMax, {given.x, given.y, given.z});
+    } else if (start) {
+        orbit_ = OrbitCamera::fromPosition(boundsMin, boundsMax, *start);
     } else {
         orbit_ = OrbitCamera::framing(boundsMin, boundsMax, aspect());
     }
@@ -441,6 +444,7 @@ bool App::nextFrame() {
         }
         if (input.scroll != 0.0f) camera_.processMouseScroll(input.scroll);
     }
+    shadersReloaded_ = input.reload;
     if (input.reload) {
         int reloaded = 0;
         for (Shader& shader : shaders_) reloaded += shader.reload() ? 1 : 0;

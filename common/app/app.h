@@ -89,8 +89,10 @@ public:
     // Switches to an orbit camera around these bounds (in the model's own units): framing them
     // (OrbitCamera::framing at the current aspect), or, when --camera x,y,z was given, from that
     // position looking at their centre (OrbitCamera::fromPosition). Needs AppConfig::orbitCamera;
-    // may be called again (another model): the view starts afresh.
-    void useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax);
+    // may be called again (another model): the view starts afresh. `start`: where the camera
+    // starts without --camera, looking at the centre, instead of the framing.
+    void useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax,
+                        std::optional<glm::vec3> start = std::nullopt);
     // The orbit camera once useOrbitCamera was called, else nullptr.
     const OrbitCamera* orbitCamera() const { return orbit_ ? &*orbit_ : nullptr; }
 
@@ -134,6 +136,9 @@ public:
     float deltaTime() const { return deltaTime_; }  // seconds since the last frame
     int frameIndex() const { return frameIndex_; }  // 0 for the first frame
     std::string renderer() const;
+    // R was pressed this frame and the App's shaders were built again: what a sample computed
+    // with shaders of its own (the IBL maps) is to be made again too, from the files as they are.
+    bool shadersReloaded() const { return shadersReloaded_; }
     // Adds to the precompute time --benchmark reports (IBL maps and the like, cache off).
     void addPrecomputeSeconds(double seconds) { precomputeSeconds_ += seconds; }
 
@@ -159,6 +164,7 @@ private:
     std::vector<std::string> shaderKeys_;  // shaders_[i]'s files and defines
     std::unique_ptr<Panel> panel_;  // made when the build has Dear ImGui and a panel is wanted
     bool panelShown_ = false;
+    bool shadersReloaded_ = false;
     bool panelHasMouse_ = false;  // this frame's mouse is the panel's, not the camera's
     std::optional<glm::vec2> cursor_;
     bool scripted_ = false;

@@ -93,7 +93,8 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     const Model model = loadModel(app.flag("--model").value_or(config.defaultModel.string()));
     const GpuModel gpuModel(model);  // every texture read: a broken one ends the run here
     describe(model, !app.options().has("--no-punctual"));
-    app.useOrbitCamera(model.boundsMin, model.boundsMax);
+    app.useOrbitCamera(model.boundsMin, model.boundsMax,
+                       app.flag("--model") ? std::nullopt : config.defaultModelCamera);
     const std::vector<PunctualLight> fallback = {defaultLight()};
     const std::span<const PunctualLight> lights =
         model.lights.empty() ? std::span<const PunctualLight>(fallback) : model.lights;
@@ -121,8 +122,10 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         std::unique_ptr<GltfRenderer>& renderer = renderers[&shader];
         if (!renderer) renderer = std::make_unique<GltfRenderer>(shader);
         renderer->setLights(punctual ? lights : std::span<const PunctualLight>());
-        if (ibl && !cache) {
-            cache.emplace(cacheDir(app.options()));
+        // Made again after R: the cache's keys hold the shaders' code, so an edited IBL shader
+        // is computed anew.
+        if (ibl && (!cache || app.shadersReloaded())) {
+            if (!cache) cache.emplace(cacheDir(app.options()));
             environment.emplace(*cache, environmentFile(app.options()));
             environment->environmentMap();  // for the sky
             irradianceMap.emplace(environment->irradianceMap(32));

@@ -5,6 +5,7 @@
 // --tonemap, --exposure, --no-ibl, --no-punctual, --single-scattering). A sample names itself and
 // its default asset.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct GltfViewerConfig {
         std::string text;
     };
     std::vector<Label> defaultModelLabels{};
+    // Where the orbit camera starts on the default model (without --camera); unset: it frames
+    // the model's bounds.
+    std::optional<glm::vec3> defaultModelCamera{};
 };
 
 // Runs the sample to its end; returns the exit code. Throws Error for bad input (the caller's

@@ -79,19 +79,26 @@ Mesh sphere(float radius, int columns, int rows) {
     return mesh;
 }
 
-// A square in the XY plane facing +Z; uv (0,0) at the top left, as glTF has it.
+// A square in the XY plane facing +Z; uv (0,0) at the top left, as glTF has it. Its back (-Z) is
+// a second face of its own, with the texture mirrored, so that the "F" reads the right way round
+// from both sides as the model turns (one material, single-sided: each face culls the other).
 Mesh quad(const std::string& name, float half, bool gradient) {
     Mesh mesh{name, {}};
     const float corners[4][2] = {{-1, 1}, {1, 1}, {1, -1}, {-1, -1}};  // top left, clockwise
     const glm::vec4 colors[4] = {
         {1, 1, 1, 1}, {1, 0.45f, 0.45f, 1}, {0.45f, 1, 0.45f, 1}, {0.45f, 0.45f, 1, 1}};
-    for (int i = 0; i < 4; ++i) {
-        mesh.data.positions.push_back({corners[i][0] * half, corners[i][1] * half, 0.0f});
-        mesh.data.normals.push_back({0.0f, 0.0f, 1.0f});
-        mesh.data.uvs.push_back({corners[i][0] * 0.5f + 0.5f, 0.5f - corners[i][1] * 0.5f});
-        if (gradient) mesh.data.colors.push_back(colors[i]);
+    for (const float side : {1.0f, -1.0f}) {
+        for (int i = 0; i < 4; ++i) {
+            mesh.data.positions.push_back({corners[i][0] * half, corners[i][1] * half, 0.0f});
+            mesh.data.normals.push_back({0.0f, 0.0f, side});
+            // seen from behind, x runs the other way: mirror u so the picture reads the same
+            mesh.data.uvs.push_back(
+                {side * corners[i][0] * 0.5f + 0.5f, 0.5f - corners[i][1] * 0.5f});
+            if (gradient) mesh.data.colors.push_back(colors[i]);
+        }
     }
-    mesh.data.indices = {0, 3, 2, 0, 2, 1};  // counter-clockwise seen from +Z
+    // counter-clockwise seen from +Z, then the back's, counter-clockwise seen from -Z
+    mesh.data.indices = {0, 3, 2, 0, 2, 1, 4, 5, 6, 4, 6, 7};
     return mesh;
 }
 

@@ -3,6 +3,7 @@
 // ambient light from it; the environment is drawn behind as a skybox. See README.md beside this
 // file.
 #include <algorithm>
+#include <optional>
 
 #include "app/app.h"
 #include "app/views.h"
@@ -31,11 +32,17 @@ int main(int argc, char** argv) try {
                   .flags = flags});
 
     // Precompute (or load from the cache): the environment cube (512^2, mipmapped) and its
-    // irradiance (32^2).
+    // irradiance (32^2). Again after R: the cache's keys hold the shaders' code, so an edited
+    // irradiance.frag is computed anew, and an undone edit finds its maps in the cache.
     pbr::IblCache cache(pbr::cacheDir(app.options()));
-    pbr::IblEnvironment environment(cache, pbr::environmentFile(app.options()));
-    const pbr::TextureCube& environmentMap = environment.environmentMap();
-    const pbr::TextureCube irradianceMap = environment.irradianceMap(32);
+    std::optional<pbr::IblEnvironment> environment;
+    std::optional<pbr::TextureCube> irradianceMap;
+    const auto precompute = [&] {
+        environment.emplace(cache, pbr::environmentFile(app.options()));
+        environment->environmentMap();
+        irradianceMap.emplace(environment->irradianceMap(32));
+    };
+    precompute();
     app.addPrecomputeSeconds(cache.computeSeconds());
 
     pbr::Skybox skybox;
@@ -45,6 +52,11 @@ int main(int argc, char** argv) try {
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
+        if (app.shadersReloaded()) {
+            precompute();
+            app.bindRenderTarget();  // the frame's, after the precomputation's own
+        }
+        const pbr::TextureCube& environmentMap = environment->environmentMap();
         const int lightCount = app.flagInt("--lights");
         const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
         pbr::Shader& shader =
@@ -64,7 +76,7 @@ int main(int argc, char** argv) try {
         pbr::selectView(shader, view);
         pbr::setPointLights(shader, std::span(pbr::kGridLightPositions).first(size_t(lightCount)),
                             glm::vec3(300.0f));
-        irradianceMap.bind(0);
+        irradianceMap->bind(0);
         const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing
         for (int row = 0; row < grid.nrRows; ++row) {
             shader.set("metallic", float(row) / float(grid.nrRows));
@@ -81,7 +93,7 @@ int main(int argc, char** argv) try {
 
         // Last: only where nothing is.
         const bool irradianceSky = app.flagChoice("--background") == "irradiance";
-        skybox.draw(irradianceSky ? irradianceMap : environmentMap, app.view(), app.projection());
+        skybox.draw(irradianceSky ? *irradianceMap : environmentMap, app.view(), app.projection());
     }
     return 0;
 } catch (...) {

@@ -4,6 +4,7 @@
 // project's five material sets instead. See README.md beside this file.
 #include <algorithm>
 #include <array>
+#include <optional>
 
 #include "app/app.h"
 #include "app/views.h"
@@ -55,13 +56,20 @@ int main(int argc, char** argv) try {
     // Precompute (or load from the cache): environment 512^2, irradiance 32^2, prefiltered
     // specular 128^2 with 5 mips (roughness = mip / 4) from pbr::kPrefilterSamples (256) samples
     // a texel, the sun summed apart (see README.md), and the BRDF LUT 512^2 RG16F from 1024.
+    // Again after R: the cache's keys hold the shaders' code, so an edited prefilter.frag (or
+    // irradiance.frag, brdf_lut.frag) is computed anew.
     pbr::IblCache cache(pbr::cacheDir(app.options()));
-    pbr::IblEnvironment environment(cache, pbr::environmentFile(app.options()));
-    const pbr::TextureCube& environmentMap = environment.environmentMap();
-    const pbr::TextureCube irradianceMap = environment.irradianceMap(32);
-    const pbr::TextureCube prefilterMap =
-        environment.prefilteredMap(128, 5, pbr::kPrefilterSamples);
-    const pbr::Texture2D brdfLUT = pbr::brdfLut(cache, 512, 1024, pbr::BrdfLutChannels::ScaleBias);
+    std::optional<pbr::IblEnvironment> environment;
+    std::optional<pbr::TextureCube> irradianceMap, prefilterMap;
+    std::optional<pbr::Texture2D> brdfLUT;
+    const auto precompute = [&] {
+        environment.emplace(cache, pbr::environmentFile(app.options()));
+        environment->environmentMap();
+        irradianceMap.emplace(environment->irradianceMap(32));
+        prefilterMap.emplace(environment->prefilteredMap(128, 5, pbr::kPrefilterSamples));
+        brdfLUT.emplace(pbr::brdfLut(cache, 512, 1024, pbr::BrdfLutChannels::ScaleBias));
+    };
+    precompute();
     app.addPrecomputeSeconds(cache.computeSeconds());
 
     pbr::Skybox skybox;
@@ -78,6 +86,11 @@ int main(int argc, char** argv) try {
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
+        if (app.shadersReloaded()) {
+            precompute();
+            app.bindRenderTarget();  // the frame's, after the precomputation's own
+        }
+        const pbr::TextureCube& environmentMap = environment->environmentMap();
         const int lightCount = app.flagInt("--lights");
         const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
         pbr::Shader& shader = textured ? app.shader("common/pbr_tangent.vert",
@@ -104,7 +117,7 @@ int main(int argc, char** argv) try {
             shader.set("ao", 1.0f);
         }
         // Units 5-7 hold the split-sum maps: the materials take 0-4.
-        pbr::useIblMaps(shader, environmentMap, irradianceMap, prefilterMap, brdfLUT, 5);
+        pbr::useIblMaps(shader, environmentMap, *irradianceMap, *prefilterMap, *brdfLUT, 5);
         shader.set("exactSplitSum", app.flagChoice("--split-sum") == "exact" ? 1 : 0);
         shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
         pbr::selectView(shader, view);
@@ -141,8 +154,8 @@ int main(int argc, char** argv) try {
 
         // Last: only where nothing is.
         const std::string background = app.flagChoice("--background");
-        const pbr::TextureCube& sky = background == "irradiance"    ? irradianceMap
-                                      : background == "prefiltered" ? prefilterMap
+        const pbr::TextureCube& sky = background == "irradiance"    ? *irradianceMap
+                                      : background == "prefiltered" ? *prefilterMap
                                                                     : environmentMap;
         skybox.draw(sky, app.view(), app.projection(), app.flagNumber("--background-lod"));
     }

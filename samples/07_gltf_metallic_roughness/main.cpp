@@ -14,7 +14,10 @@ int main(int argc, char** argv) try {
                               {.name = "07_gltf_metallic_roughness",
                                .title = "07 glTF metallic-roughness",
                                .defaultModel = pbr::modelDir() / "pbr_showcase.gltf",
-                               .defaultModelDescription = "the project's PBR showcase"});
+                               .defaultModelDescription = "the project's PBR showcase",
+                               // above the front row, the floor seen from above: the showcase
+                               // fills the frame (the bounds' framing left it a third of it)
+                               .defaultModelCamera = glm::vec3(0.0f, 2.2f, 5.5f)});
 } catch (...) {
     return pbr::reportFailure();
 }

@@ -29,6 +29,8 @@ std::vector<GoldenCase> goldenCases() {
           {"--model", (kAssimpGltf / "BoxTextured-glTF-Embedded/BoxTextured.gltf").string(),
            "--size", "480x270"}},
          true},
+        // Half a turn on (time pi): the squares' backs, each picture the right way round.
+        {"03_gltf_unlit_back", "03_gltf_unlit", {"--time", "3.14159", "--size", "480x270"}, 0.03},
         {"04_ibl_irradiance", "04_ibl_irradiance"},
         {"05_ibl_specular", "05_ibl_specular"},
         {"05_ibl_specular_textured", "05_ibl_specular", {"--textured"}},
