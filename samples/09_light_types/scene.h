@@ -26,9 +26,10 @@ inline constexpr pbr::Attenuation kPointAttenuation{1.0f, 0.7f, 1.8f};
 // One light of each kind, placed so the picture shows what each does.
 inline std::vector<pbr::PackedLight> sceneLights(pbr::Attenuation pointAttenuation) {
     return {
-        // a warm point light in front of the left sphere (by default the terms of LearnOpenGL's
-        // table for a 7 m range: a pool of light a few metres wide)
-        pbr::pointLight({-5.0f, 1.8f, 1.8f}, {1.0f, 0.8f, 0.6f}, 10.0f, pointAttenuation),
+        // a warm point light 1.2 m above the floor in front of the left sphere, bright enough
+        // (30) that its pool shows (by default the terms of LearnOpenGL's table for a 7 m range:
+        // a pool a few metres wide)
+        pbr::pointLight({-5.0f, 1.2f, 1.8f}, {1.0f, 0.8f, 0.6f}, 30.0f, pointAttenuation),
         // a dim bluish directional light, from above and behind the camera's left
         pbr::directionalLight({0.3f, -1.0f, -0.4f}, {0.6f, 0.7f, 1.0f}, 0.6f),
         // a spot straight down onto the floor in front of the middle sphere: a cone of 18 degrees
