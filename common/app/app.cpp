@@ -74,6 +74,30 @@ std::vector<InputFrame> readPanelScript(const fs::path& path) {
     return frames;
 }
 
+#ifdef PBR_WEBGL
+// The sample's flag declarations for the page's controls (web::declareFlags), their values now.
+std::string flagsJson(const std::vector<FlagSpec>& flags, const Options& options) {
+    auto text = [](const std::string& value) { return "\"" + jsonEscape(value) + "\""; };
+    std::string json = "[";
+    for (const FlagSpec& spec : flags) {
+        static const char* const kKinds[] = {"switch", "text",    "folder", "integer",
+                                             "number", "numbers", "choice"};
+        std::string choices;
+        for (const std::string& choice : spec.choices) choices += (choices.empty() ? "" : ",") + text(choice);
+        const auto value = options.sampleFlags.find(spec.name);
+        json += std::string(json.size() > 1 ? "," : "") + "{\"name\":" + text(spec.name) +
+                ",\"kind\":\"" + kKinds[int(spec.kind)] + "\",\"help\":" + text(spec.help) +
+                ",\"min\":" + flagNumberText(spec.min) + ",\"max\":" + flagNumberText(spec.max) +
+                ",\"count\":" + std::to_string(spec.count) + ",\"choices\":[" + choices +
+                "],\"default\":" + text(spec.defaultValue) +
+                ",\"live\":" + (spec.live ? "true" : "false") + ",\"value\":" +
+                (value == options.sampleFlags.end() ? std::string("null") : text(value->second)) +
+                "}";
+    }
+    return json + "]";
+}
+#endif
+
 }  // namespace
 
 App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
@@ -175,6 +199,9 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (context_->windowed() && !config_.orbitCamera && !config_.fixedView) {
         context_->setCursorCaptured(mouseLook());
     }
+#ifdef PBR_WEBGL
+    web::declareFlags(flagsJson(config_.flags, options_));  // the page's own controls
+#endif
     checkGlErrors("start-up");
 }
 
@@ -390,6 +417,28 @@ bool App::nextFrame() {
             if (scripted.leftButton) input.dragDelta = input.mouseDelta;
         }
     }
+#ifdef PBR_WEBGL
+    // The page's controls: a live flag changes as the panel's would, through the command line's
+    // own checks (a value they refuse is one line, and the flag keeps its value).
+    for (const web::FlagChange& change : web::takeFlagChanges()) {
+        const auto spec = std::find_if(config_.flags.begin(), config_.flags.end(),
+                                       [&](const FlagSpec& f) { return f.name == change.name; });
+        if (spec == config_.flags.end() || !spec->live) continue;
+        if (!change.present) {
+            options_.sampleFlags.erase(change.name);
+            continue;
+        }
+        try {
+            const std::vector<std::string> args =
+                spec->kind == FlagSpec::Kind::Switch ? std::vector<std::string>{change.name}
+                                                     : std::vector<std::string>{change.name, change.value};
+            const Options parsed = parseOptions(args, config_.flags);
+            options_.sampleFlags[change.name] = parsed.sampleFlags.at(change.name);
+        } catch (const UsageError& e) {
+            std::fprintf(stderr, "%s: error: %s\n", config_.name.c_str(), e.what());
+        }
+    }
+#endif
     if (input.togglePanel && panel_) {
         panelShown_ = !panelShown_;
         if (context_->windowed() && !config_.orbitCamera && !config_.fixedView) {

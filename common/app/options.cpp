@@ -48,6 +48,15 @@ constexpr CommonFlag kCommonFlags[] = {
      "egl may pick a GPU, egl-software never does"},
 };
 
+// The browser build (gl/gl.h's PBR_WEBGL comes from the same macro; this file knows no GL): a
+// page's --help lists what a page has, without the offscreen backends, the panel, the
+// environment variables or the shader reload.
+#ifdef __EMSCRIPTEN__
+constexpr bool kInPage = true;
+#else
+constexpr bool kInPage = false;
+#endif
+
 constexpr int kUsageWidth = 100;    // columns the help text is wrapped to
 constexpr size_t kFlagColumn = 30;  // where the help starts; a longer flag puts it on the next line
 
@@ -416,6 +425,8 @@ std::string usageText(const std::string& program, std::span<const FlagSpec> samp
     std::ostringstream out;
     out << "usage: " << program << " [flags]\n\nflags every sample takes:\n";
     for (const CommonFlag& flag : kCommonFlags) {
+        if (kInPage && (std::string(flag.name) == "--backend" || std::string(flag.name) == "--panel"))
+            continue;
         std::string left = flag.name;
         if (flag.valueName) left.append(" ").append(flag.valueName);
         usageLine(out, left, flag.help);
@@ -427,6 +438,13 @@ std::string usageText(const std::string& program, std::span<const FlagSpec> samp
             usageLine(out, flag.name + (flag.valueName.empty() ? "" : " " + flag.valueName),
                       flag.help + (saysDefault ? " (default " + flag.defaultValue + ")" : ""));
         }
+    }
+    if (kInPage) {
+        out << (orbitCamera ? "\nthis sample's camera orbits the model's centre: --camera takes "
+                              "x,y,z only\nin the page: drag (left button) orbit, scroll dolly\n"
+                            : "\nin the page: click the picture to look around, WASD move, scroll "
+                              "zoom;\n  the controls under the picture change the live flags\n");
+        return out.str();
     }
     out << "\nenvironment:\n";
     for (const EnvironmentVariable& variable : environmentVariables()) {

@@ -85,6 +85,9 @@ public:
     void setCursorCaptured(bool captured) override {
         if (captured == captured_) return;
         captured_ = captured;
+        // A page asks for pointer lock on a click on the picture (web/shell.html), as browsers
+        // require; emscripten's GLFW would ask at once, and be refused.
+        if (kWebGl) return;
         glfwSetInputMode(window_, GLFW_CURSOR, captured ? GLFW_CURSOR_DISABLED : GLFW_CURSOR_NORMAL);
         haveCursor_ = false;  // the next cursor event sets a new reference: the view does not jump
     }

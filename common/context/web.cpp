@@ -19,7 +19,47 @@ EM_ASYNC_JS(void, pbr_wait_for_animation_frame, (), {
     await new Promise(function(resolve) { requestAnimationFrame(function() { resolve(); }); });
 });
 
+// The controls: Module.pbrDeclareFlags builds them; their changes queue up in the page as
+// lines "name<TAB>1<TAB>value" (1: given, 0: a switch turned off), fetched once a frame.
+EM_JS(void, pbr_declare_flags, (const char* json), {
+    if (Module["pbrDeclareFlags"]) Module["pbrDeclareFlags"](JSON.parse(UTF8ToString(json)));
+});
+EM_JS(int, pbr_flag_changes_length, (), {
+    Module["pbrChangeText"] = (Module["pbrFlagChanges"] || []).join("\n");
+    Module["pbrFlagChanges"] = [];
+    return lengthBytesUTF8(Module["pbrChangeText"]) + 1;
+});
+EM_JS(void, pbr_copy_flag_changes, (char* buffer, int size), {
+    stringToUTF8(Module["pbrChangeText"], buffer, size);
+});
+
 namespace pbr::web {
+
+void declareFlags(const std::string& json) {
+    pbr_declare_flags(json.c_str());
+}
+
+std::vector<FlagChange> takeFlagChanges() {
+    const int size = pbr_flag_changes_length();
+    if (size <= 1) return {};
+    std::string text(size_t(size), '\0');
+    pbr_copy_flag_changes(text.data(), size);
+    text.resize(size_t(size - 1));
+    std::vector<FlagChange> changes;
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        const std::string line = text.substr(start, end - start);
+        const size_t tab1 = line.find('\t'), tab2 = line.find('\t', tab1 + 1);
+        if (tab1 != std::string::npos && tab2 != std::string::npos) {
+            changes.push_back({line.substr(0, tab1), line.substr(tab1 + 1, tab2 - tab1 - 1) == "1",
+                               line.substr(tab2 + 1)});
+        }
+        start = end + 1;
+    }
+    return changes;
+}
 
 void handOver(const std::filesystem::path& path) {
     const std::string bytes = readTextFile(path);

@@ -6,6 +6,9 @@
 // bytes (base64) in the DOM, where a test reads them back; and the frame loop gives the browser
 // its turn between frames, so that it can show the canvas and deliver input.
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "gl/gl.h"
 
@@ -20,6 +23,16 @@ void waitForNextFrame();
 // 3.1.6 drops the return value of a main that resumed): the App says how the run ended as it
 // goes, and the page exits with that code right after main() returns.
 void exitWithAfterMain(int code);
+// The page's controls (web/shell.html builds them as form elements): the sample's flag
+// declarations as JSON, handed over once; and what the controls changed since the last call, a
+// flag and its new text each (a switch turned off: no text).
+struct FlagChange {
+    std::string name;
+    bool present = true;
+    std::string value;
+};
+void declareFlags(const std::string& json);
+std::vector<FlagChange> takeFlagChanges();
 #else
 inline void handOver(const std::filesystem::path&) {}
 inline void waitForNextFrame() {}

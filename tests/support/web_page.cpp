@@ -88,6 +88,8 @@ PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
         const std::string name = entry.path().filename().string();
         if (name == "page.log") {
             page.log = readBytes(entry.path());
+        } else if (name == "address.txt") {
+            page.address = readBytes(entry.path());
         } else if (name == "exit.txt") {
             page.exitCode = std::atoi(readBytes(entry.path()).c_str());
         } else if (entry.is_regular_file() && name.front() != '.') {

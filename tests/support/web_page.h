@@ -18,6 +18,7 @@ struct PageRun {
     std::optional<int> exitCode;  // the sample's; none when it is still running or never ran
     std::string log;              // what the sample printed (stdout and stderr, in order)
     std::map<std::string, std::string> files;  // name -> bytes
+    std::string address;  // the page's query string at the end (its controls keep it current)
 };
 
 // Why the web tests cannot run on this machine (no browser, no web build), or nullopt.
@@ -29,7 +30,8 @@ std::filesystem::path webPage(const std::string& sample);
 // Opens the page with `args` as the sample's command line (the query string, one item an
 // argument) and waits for it to exit (4 minutes at most); the files it wrote land in `dir`.
 // `input` goes after '#' (web/shell.html): "hold=87" keeps W down, "move=8,0" moves the mouse
-// 8 pixels right at every frame.
+// 8 pixels right at every frame, "set=--lights:2" changes that control of the page as a user
+// would.
 PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
                 const std::filesystem::path& dir, const std::string& input = "");
 

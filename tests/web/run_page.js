@@ -1,6 +1,7 @@
 // Opens one web sample's page in headless Chromium and waits, in real time, until the sample has
 // exited (the page's #pbr-exit, web/shell.html), then leaves what the page holds in a folder:
-// every file the run wrote, its log (page.log) and its exit code (exit.txt). The browser is
+// every file the run wrote, its log (page.log), its exit code (exit.txt) and the page's query
+// string at the end (address.txt: the page's controls keep it current). The browser is
 // driven over the DevTools protocol on a pipe (tests/support/chromium_pipe.js), so nothing waits
 // on a guess: not a virtual-time budget, which can end a page whose frame loop is still running.
 //
@@ -29,7 +30,8 @@ const collect = `(function () {
     files[e.getAttribute("data-name")] = e.textContent;
   });
   var log = document.getElementById("pbr-log");
-  return JSON.stringify({ exit: exit.textContent, log: log ? log.textContent : "", files: files });
+  return JSON.stringify({ exit: exit.textContent, log: log ? log.textContent : "", files: files,
+                         address: location.search });
 })()`;
 
 function finish(code, why) {
@@ -52,6 +54,7 @@ function finish(code, why) {
       }
       writeWhole(path.join(dir, "page.log"), page.log);
       writeWhole(path.join(dir, "exit.txt"), page.exit);
+      writeWhole(path.join(dir, "address.txt"), page.address);
       clearTimeout(timer);
       finish(0);
     }

@@ -223,6 +223,32 @@ TEST(Web, KeysAndMouseMoveTheCamera) {
     EXPECT_LT(turned.centreX, still.centreX - 10.0);
 }
 
+// The page's controls, made from the sample's flag declarations, change the running sample as
+// the window's panel does: the last frame after a change equals a page opened with the flag, and
+// the address follows the change (a link to the view). A control of a start-up flag does not
+// exist as a live one.
+TEST(Web, ControlsChangeThePageLive) {
+    PBR_NEED_WEB("01_lighting");
+    const std::vector<std::string> args = {"--frames", "3", "--size", "320x180", "--output",
+                                           "last.png"};
+    const fs::path changedDir = testOutputDir("web_controls_changed");
+    const PageRun changed = runPage("01_lighting", args, changedDir, "set=--lights:2");
+    ASSERT_EQ(changed.exitCode, std::optional<int>(0)) << changed.log;
+    std::vector<std::string> withFlag = args;
+    withFlag.insert(withFlag.end(), {"--lights", "2"});
+    const PageRun started = runPage("01_lighting", withFlag, testOutputDir("web_controls_started"));
+    ASSERT_EQ(started.exitCode, std::optional<int>(0)) << started.log;
+    const PageRun untouched = runPage("01_lighting", args, testOutputDir("web_controls_untouched"));
+    ASSERT_TRUE(changed.files.count("last.png") && started.files.count("last.png") &&
+                untouched.files.count("last.png"));
+    EXPECT_TRUE(changed.files.at("last.png") == started.files.at("last.png"))
+        << "the page after the control's change differs from the page opened with --lights 2";
+    EXPECT_FALSE(changed.files.at("last.png") == untouched.files.at("last.png"))
+        << "the control's change did not show";
+    std::printf("the address after the change: %s\n", changed.address.c_str());
+    EXPECT_NE(changed.address.find("--lights=2"), std::string::npos) << changed.address;
+}
+
 // The gallery links every web sample's page, each page is there, and each entry says what it
 // teaches (its README's summary: the first paragraph, with the formula or list it introduces).
 TEST(Web, GalleryLinksEveryPage) {
