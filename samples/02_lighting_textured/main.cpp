@@ -1,6 +1,12 @@
 // 02 lighting_textured: LearnOpenGL "PBR / Lighting", textured. The 7 x 7 grid again, every
 // sphere in the same material from five maps (rusted iron, made by the project), one light.
 // See README.md beside this file.
+#include <array>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "app/app.h"
 #include "app/views.h"
 #include "base/error.h"
@@ -9,30 +15,60 @@
 #include "gl/texture.h"
 #include "math/sphere_grid.h"
 
+namespace {
+// The project's material sets (--material), and the maps each switch leaves out (the shaders'
+// NO_..._MAP defines, material_maps.glsl).
+const std::vector<std::string> kMaterialSets = {"rusted_iron", "gold", "grass", "plastic", "wall"};
+constexpr std::array<std::pair<const char*, const char*>, 5> kMapSwitches = {{
+    {"--no-albedo-map", "NO_ALBEDO_MAP"},
+    {"--no-normal-map", "NO_NORMAL_MAP"},
+    {"--no-metallic-map", "NO_METALLIC_MAP"},
+    {"--no-roughness-map", "NO_ROUGHNESS_MAP"},
+    {"--no-ao-map", "NO_AO_MAP"},
+}};
+}  // namespace
+
 int main(int argc, char** argv) try {
-    pbr::App app(
-        argc, argv,
-        {.name = "02_lighting_textured",
-         .title = "02 lighting textured: rusted iron from five maps",
-         .cameraPosition = {0.0f, 0.0f, 9.0f},  // 5 x 3 spheres, the maps readable (the grid: 0,0,23)
-         .flags = {pbr::FlagSpec::text("--material-dir", "DIR",
-                                       "a folder of PBR maps: albedo (or basecolor, diffuse, "
-                                       "color), normal, metallic, roughness, optional ao; any "
-                                       "prefix, .png or .jpg (default: the baked rusted iron)"),
-                   // --tangent-frame and --view are read every frame (live in the panel)
-                   pbr::FlagSpec::choice(
-                       "--tangent-frame", {"mesh", "derivatives"},
-                       "tangents from the sphere (default) or from screen-space derivatives")
-                       .asLive(),
-                   pbr::FlagSpec::choice("--filter", {"trilinear", "nearest"},
-                                         "texture filtering (default trilinear)"),
-                   pbr::viewFlag(pbr::kDirectLightViews).asLive()}});
-    const std::string filter = app.flagChoice("--filter");
+    std::vector<pbr::FlagSpec> flags = {
+        pbr::FlagSpec::text("--material-dir", "DIR",
+                            "a folder of PBR maps: albedo (or basecolor, diffuse, color), normal, "
+                            "metallic, roughness, optional ao; any prefix, .png or .jpg (default: "
+                            "the project's set --material names)"),
+        // the rest are read every frame (live in the panel)
+        pbr::FlagSpec::choice("--material", kMaterialSets,
+                              "which of the project's material sets (default rusted_iron; "
+                              "--material-dir wins)")
+            .asLive(),
+        pbr::FlagSpec::choice(
+            "--tangent-frame", {"mesh", "derivatives"},
+            "tangents from the sphere (default) or from screen-space derivatives")
+            .asLive(),
+        pbr::FlagSpec::choice("--filter", {"trilinear", "nearest"},
+                              "texture filtering (default trilinear)"),
+        pbr::viewFlag(pbr::kDirectLightViews).asLive()};
+    flags.push_back(pbr::FlagSpec::toggle("--no-albedo-map", "mid grey instead of the albedo map").asLive());
+    flags.push_back(pbr::FlagSpec::toggle("--no-normal-map", "the mesh's own normal instead of the normal map").asLive());
+    flags.push_back(pbr::FlagSpec::toggle("--no-metallic-map", "metallic 0 instead of the metallic map").asLive());
+    flags.push_back(pbr::FlagSpec::toggle("--no-roughness-map", "roughness 0.5 instead of the roughness map").asLive());
+    flags.push_back(pbr::FlagSpec::toggle("--no-ao-map", "ao 1 instead of the ao map").asLive());
+    pbr::App app(argc, argv,
+                 {.name = "02_lighting_textured",
+                  .title = "02 lighting textured: rusted iron from five maps",
+                  // 5 x 3 spheres, the maps readable (the whole grid: 0,0,23)
+                  .cameraPosition = {0.0f, 0.0f, 9.0f},
+                  .flags = flags});
+    const pbr::TextureFilter filter = app.flagChoice("--filter") == "nearest"
+                                          ? pbr::TextureFilter::Nearest
+                                          : pbr::TextureFilter::Trilinear;
 
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
-    const pbr::PbrTextures material = pbr::loadPbrTextures(
-        app.flag("--material-dir").value_or((pbr::materialDir() / "rusted_iron").string()),
-        filter == "nearest" ? pbr::TextureFilter::Nearest : pbr::TextureFilter::Trilinear);
+    // The material: --material-dir's folder, read at start-up; else the set --material names,
+    // each read the first time it is shown.
+    std::map<std::string, pbr::PbrTextures> materials;
+    const auto materialFolder = [&] {
+        return app.flag("--material-dir").value_or((pbr::materialDir() / app.flagChoice("--material")).string());
+    };
+    materials.emplace(materialFolder(), pbr::loadPbrTextures(materialFolder(), filter));
 
     const glm::vec3 lightPosition(0.0f, 0.0f, 10.0f);  // one light in front of the grid
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f};
@@ -41,8 +77,17 @@ int main(int argc, char** argv) try {
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
         const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
-        pbr::Shader& shader = app.shader("common/pbr_tangent.vert",
-                                         "02_lighting_textured/pbr.frag", pbr::viewDefines(view));
+        std::vector<std::string> defines = pbr::viewDefines(view);
+        for (const auto& [flag, define] : kMapSwitches) {
+            if (app.options().has(flag)) defines.push_back(define);
+        }
+        pbr::Shader& shader =
+            app.shader("common/pbr_tangent.vert", "02_lighting_textured/pbr.frag", defines);
+        const std::string folder = materialFolder();
+        if (!materials.contains(folder)) {
+            materials.emplace(folder, pbr::loadPbrTextures(folder, filter));
+        }
+        const pbr::PbrTextures& material = materials.at(folder);
 
         glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
