@@ -311,16 +311,19 @@ Shader& App::shader(const std::string& vertex, const std::string& fragment,
 }
 
 void App::label(const glm::vec2& pixel, const std::string& text) {
+#ifdef PBR_WEBGL
+    if (context_->windowed()) web::label(pixel.x, pixel.y, text);  // the page places them
+#else
     if (panel_) panel_->label(pixel, text);
+#endif
 }
 
 void App::label(const glm::vec3& world, const std::string& text) {
-    if (!panel_) return;
     const glm::vec4 clip = projection() * view() * glm::vec4(world, 1.0f);
     if (clip.w <= 0.0f) return;  // behind the camera
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    panel_->label({(0.5f + 0.5f * ndc.x) * float(width()), (0.5f - 0.5f * ndc.y) * float(height())},
-                  text);
+    label(glm::vec2((0.5f + 0.5f * ndc.x) * float(width()), (0.5f - 0.5f * ndc.y) * float(height())),
+          text);
 }
 
 void labelSphereGrid(App& app, const SphereGrid& grid, float roughnessOffset,
@@ -571,6 +574,9 @@ void App::endFrame() {
     if (context_->windowed()) {
         const glm::ivec2 size = context_->framebufferSize();
         target_->blitToDefault(size.x, size.y);
+#ifdef PBR_WEBGL
+        web::showLabels(width(), height());
+#endif
         if (panel_ && !panelInPicture) {
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
             glViewport(0, 0, size.x, size.y);

@@ -33,7 +33,24 @@ EM_JS(void, pbr_copy_flag_changes, (char* buffer, int size), {
     stringToUTF8(Module["pbrChangeText"], buffer, size);
 });
 
+// Labels: Module.pbrLabels collects the frame's; pbrShowLabels places them over the canvas.
+EM_JS(void, pbr_label, (float x, float y, const char* text), {
+    (Module["pbrLabels"] = Module["pbrLabels"] || []).push([x, y, UTF8ToString(text)]);
+});
+EM_JS(void, pbr_show_labels, (int width, int height), {
+    if (Module["pbrShowLabels"]) Module["pbrShowLabels"](Module["pbrLabels"] || [], width, height);
+    Module["pbrLabels"] = [];
+});
+
 namespace pbr::web {
+
+void label(float x, float y, const std::string& text) {
+    pbr_label(x, y, text.c_str());
+}
+
+void showLabels(int width, int height) {
+    pbr_show_labels(width, height);
+}
 
 void declareFlags(const std::string& json) {
     pbr_declare_flags(json.c_str());

@@ -33,6 +33,10 @@ struct FlagChange {
 };
 void declareFlags(const std::string& json);
 std::vector<FlagChange> takeFlagChanges();
+// Labels over the picture, as the window's panel layer draws them (App::label): those of the
+// frame being drawn, at pixels of the picture from its top-left; shown when the frame is.
+void label(float x, float y, const std::string& text);
+void showLabels(int width, int height);
 #else
 inline void handOver(const std::filesystem::path&) {}
 inline void waitForNextFrame() {}

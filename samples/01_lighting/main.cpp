@@ -24,7 +24,7 @@ int main(int argc, char** argv) try {
                                           0, 4, 4)
                        .asLive(),
                    pbr::FlagSpec::numbers("--light-color", "R,G,B",
-                                          "the point lights' radiance (the text's 300 each)", 3,
+                                          "the point lights' radiance, as the text's", 3,
                                           0.0, 1000.0, {300.0, 300.0, 300.0})
                        .asLive(),
                    pbr::FlagSpec::numbers("--albedo", "R,G,B",
