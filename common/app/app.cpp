@@ -173,6 +173,7 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     } else {
         camera_ = FlyCamera(config_.cameraPosition, config_.cameraYaw, config_.cameraPitch);
     }
+    if (options_.fov) camera_.setZoom(float(*options_.fov));
 
     if (options_.benchmark) {
         // One more than measured: the first frame compiles shader variants and is not counted.
@@ -370,6 +371,10 @@ std::string App::commandLine() const {
     if (!orbit_ && !config_.orbitCamera && !config_.fixedView) {
         line += "," + flagNumberText(camera_.yaw()) + "," + flagNumberText(camera_.pitch());
     }
+    if (!orbit_ && !config_.orbitCamera && !config_.fixedView &&
+        camera_.zoom() != FlyCamera::kDefaultZoom) {
+        line += " --fov " + flagNumberText(camera_.zoom());  // scrolled
+    }
     if (paused_) {
         line += " --time " + flagNumberText(pausedTime_);
     } else if (options_.time) {
@@ -528,11 +533,29 @@ void App::updatePanel(const InputFrame& input) {
                        .paused = paused_};
     // Headless (a script, --panel) the panel's clock is a steady 60 frames a second.
     const float delta = headless() || deltaTime_ <= 0.0f ? 1.0f / 60.0f : deltaTime_;
-    panel_->begin({.cursor = input.cursor,
-                   .leftButton = input.leftButton,
-                   .scroll = input.scroll,
-                   .deltaSeconds = delta},
-                  {width(), height()}, options_.sampleFlags, status, panelShown_);
+    const std::map<std::string, std::string> before = options_.sampleFlags;
+    const std::vector<std::string> changed =
+        panel_->begin({.cursor = input.cursor,
+                       .leftButton = input.leftButton,
+                       .scroll = input.scroll,
+                       .deltaSeconds = delta},
+                      {width(), height()}, options_.sampleFlags, status, panelShown_);
+    // A control's value passes the command line's own checks, or the flag keeps its value (09's
+    // attenuation terms may not all be 0, whatever the sliders say).
+    for (const std::string& name : changed) {
+        const auto value = options_.sampleFlags.find(name);
+        if (value == options_.sampleFlags.end() || value->second.empty()) continue;
+        try {
+            parseOptions(std::vector<std::string>{name, value->second}, config_.flags);
+        } catch (const UsageError& e) {
+            std::fprintf(stderr, "%s: error: %s\n", config_.name.c_str(), e.what());
+            if (const auto old = before.find(name); old != before.end()) {
+                value->second = old->second;
+            } else {
+                options_.sampleFlags.erase(value);
+            }
+        }
+    }
     panelHasMouse_ = panel_->wantsMouse();
     if (status.pauseClicked) {
         if (paused_) {

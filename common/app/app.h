@@ -84,7 +84,9 @@ public:
     // A start pose found after the App was made (framing a model, say); --camera still wins.
     void setDefaultCamera(const glm::vec3& position, float yaw = FlyCamera::kDefaultYaw,
                           float pitch = FlyCamera::kDefaultPitch) {
-        if (!options_.camera) camera_ = FlyCamera(position, yaw, pitch);
+        if (options_.camera) return;
+        camera_ = FlyCamera(position, yaw, pitch);
+        if (options_.fov) camera_.setZoom(float(*options_.fov));
     }
     // Switches to an orbit camera around these bounds (in the model's own units): framing them
     // (OrbitCamera::framing at the current aspect), or, when --camera x,y,z was given, from that

@@ -39,6 +39,8 @@ constexpr CommonFlag kCommonFlags[] = {
      "llvmpipe); default 4"},
     {"--camera", "x,y,z[,yaw,pitch]",
      "camera start position, and yaw/pitch in degrees (default yaw -90, pitch 0)"},
+    {"--fov", "DEGREES",
+     "the camera's field of view, 1 to 45 (default 45; scrolling in a window changes it)"},
     {"--benchmark", nullptr, "time the frames and print one JSON line of statistics"},
     {"--panel", nullptr,
      "draw the live panel into the picture too, headless as well (a window always shows it; "
@@ -169,6 +171,11 @@ void checkSampleFlag(const FlagSpec& spec, const std::string& value) {
             }
             break;
     }
+    if (spec.refuse) {
+        if (const std::string why = spec.refuse(value); !why.empty()) {
+            fail(spec.name + ": " + inQuotes(value) + ": " + why);
+        }
+    }
 }
 
 // "--size 640x360": the message says which half is wrong and why.
@@ -255,6 +262,12 @@ FlagSpec FlagSpec::choice(std::string name, std::vector<std::string> choices, st
 FlagSpec FlagSpec::asLive() const {
     FlagSpec spec = *this;
     spec.live = true;
+    return spec;
+}
+
+FlagSpec FlagSpec::refusing(std::function<std::string(const std::string& value)> why) const {
+    FlagSpec spec = *this;
+    spec.refuse = std::move(why);
     return spec;
 }
 
@@ -349,6 +362,8 @@ Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec
             options.help = true;
         } else if (flag == "--headless") {
             options.headless = true;
+        } else if (flag == "--fov") {
+            options.fov = parseNumberFlag("--fov", value, 1.0, 45.0);
         } else if (flag == "--panel") {
             options.panel = true;
         } else if (flag == "--benchmark") {

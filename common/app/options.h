@@ -3,6 +3,7 @@
 // A sample's flags say what values they take, so that parseOptions checks every flag, common or
 // the sample's own, before any window or GL context exists. Pure: no GL, no window, so it is
 // unit tested directly.
+#include <functional>
 #include <map>
 #include <optional>
 #include <span>
@@ -30,6 +31,10 @@ struct FlagSpec {
     // Number and Numbers (where it is empty, the sample has no single default). --help says it.
     std::string defaultValue{};
     bool live = false;  // the sample reads it every frame: the panel may change it while it runs
+    // A check of the sample's own beyond the kind's (09: not all three attenuation terms 0):
+    // returns why a value is refused, or "". Run wherever a value comes from: the command line,
+    // the panel, the page.
+    std::function<std::string(const std::string& value)> refuse{};
 
     static FlagSpec toggle(std::string name, std::string help);
     static FlagSpec text(std::string name, std::string valueName, std::string help);
@@ -47,6 +52,8 @@ struct FlagSpec {
 
     // The same flag, read by the sample every frame (so the panel's control for it is live).
     FlagSpec asLive() const;
+    // The same flag with a check of its own (see `refuse`).
+    FlagSpec refusing(std::function<std::string(const std::string& value)> why) const;
 };
 
 // A number as a flag's text: the shortest that reads back as the same double ("0.3", "1e-05").
@@ -69,6 +76,7 @@ struct Options {
     std::optional<double> time;  // fixed scene time; headless default 0
     int msaa = 4;                // samples per pixel; 0 or 1 turns multisampling off
     std::optional<CameraStart> camera;
+    std::optional<double> fov;  // --fov: the fly camera's field of view in degrees
     std::string backend;  // offscreen backend: "osmesa", "egl", or "" (automatic)
     std::map<std::string, std::string> sampleFlags;  // "--lights" -> "3"; switches -> ""
 

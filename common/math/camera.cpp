@@ -41,6 +41,10 @@ void FlyCamera::processMouseScroll(float yOffset) {
     zoom_ = std::clamp(zoom_ - yOffset, 1.0f, kDefaultZoom);
 }
 
+void FlyCamera::setZoom(float degrees) {
+    zoom_ = std::clamp(degrees, 1.0f, kDefaultZoom);
+}
+
 glm::mat4 FlyCamera::viewMatrix() const {
     return glm::lookAt(position_, position_ + front_, up_);
 }

@@ -29,6 +29,8 @@ public:
     void processKeyboard(CameraMove direction, float deltaTime);
     void processMouseMovement(float xOffset, float yOffset, bool constrainPitch = true);
     void processMouseScroll(float yOffset);
+    // The field of view in degrees, kept in [1, kDefaultZoom] as scrolling keeps it (--fov).
+    void setZoom(float degrees);
 
     glm::mat4 viewMatrix() const;
     // perspective(radians(zoom), aspect, 0.1, 100): the field of view in radians, as it must be.

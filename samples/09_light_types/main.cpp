@@ -4,6 +4,7 @@
 // over (shaders/include/light_types.glsl). A floor and a row of spheres in the project's material
 // sets (scene.h), with the engine's material inputs (texture tiling and offset, an albedo tint).
 // See README.md beside this file.
+#include <cstdlib>
 #include <iterator>
 #include <map>
 #include <string>
@@ -40,21 +41,26 @@ int main(int argc, char** argv) try {
                  .asLive(),
              pbr::FlagSpec::numbers("--attenuation", "C,L,Q",
                                     "the point light's constant, linear and quadratic terms, "
-                                    "each >= 0, not all 0 (default 1,0.7,1.8)",
-                                    3, 0.0, 1e6),
+                                    "each >= 0, not all 0",
+                                    // light_types::kPointAttenuation, which the reference
+                                    // tests light the scene with
+                                    3, 0.0, 1e6, {1.0, 0.7, 1.8})
+                 .refusing([](const std::string& value) {
+                     // (three numbers >= 0 by now: the kind's own check comes first)
+                     double sum = 0.0;
+                     for (size_t at = 0; at != std::string::npos;) {
+                         sum += std::strtod(value.c_str() + at, nullptr);
+                         at = value.find(',', at);
+                         if (at != std::string::npos) ++at;
+                     }
+                     return sum > 0.0 ? std::string() : std::string("all three terms are 0");
+                 })
+                 .asLive(),
              pbr::FlagSpec::toggle("--untextured",
                                    "a plain material instead of the maps: the tint as albedo, "
                                    "a rough dielectric floor, spheres of roughness 0.4 and "
                                    "metallic 0 to 1 from left to right (the tests' surface)"),
              pbr::viewFlag(pbr::kLightTypeViews).asLive()}});
-    pbr::Attenuation attenuation = light_types::kPointAttenuation;
-    if (const auto n = app.flagNumbers("--attenuation")) {
-        if ((*n)[0] + (*n)[1] + (*n)[2] <= 0.0f) {
-            throw pbr::UsageError(
-                "--attenuation: '" + *app.flag("--attenuation") + "': all three terms are 0", "");
-        }
-        attenuation = {(*n)[0], (*n)[1], (*n)[2]};
-    }
     const bool untextured = app.options().has("--untextured");
 
     const std::vector<light_types::Object> objects = light_types::objects();
@@ -77,6 +83,8 @@ int main(int argc, char** argv) try {
         pbr::Shader& shader = app.shader("common/pbr_tangent.vert",
                                          "09_light_types/light_types.frag", pbr::viewDefines(view));
         // The scene's lights of the kinds asked for, and the moving ones where they are now.
+        const glm::vec3 terms = app.flagVec3("--attenuation");
+        const pbr::Attenuation attenuation{terms.x, terms.y, terms.z};
         std::vector<pbr::PackedLight> lights;
         for (const pbr::PackedLight& light : light_types::sceneLights(attenuation)) {
             if (only == "all" || pbr::kLightTypeNames[int(light.type())] == only)

@@ -82,6 +82,10 @@ TEST(Cli, BadFlagValuesNameTheFlagBeforeAnyContext) {
          "--attenuation: '1,2' is not C,L,Q (3 numbers, comma-separated)"},
         {{"09_light_types", "--attenuation", "1,-1,0"},
          "--attenuation: -1 is out of range [0, 1e+06]"},
+        // the sample's own check (FlagSpec::refusing), also before any context
+        {{"09_light_types", "--attenuation", "0,0e3,0.0"},
+         "--attenuation: '0,0e3,0.0': all three terms are 0"},
+        {{"01_lighting", "--fov", "0.5"}, "--fov: 0.5 is out of range [1, 45]"},
     };
     for (const auto& [argv, message] : cases) {
         const RunResult run = runSample(argv, {.unsetEnv = {"DISPLAY", "WAYLAND_DISPLAY"}});
