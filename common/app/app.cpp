@@ -429,22 +429,8 @@ bool App::nextFrame() {
     // The page's controls: a live flag changes as the panel's would, through the command line's
     // own checks (a value they refuse is one line, and the flag keeps its value).
     for (const web::FlagChange& change : web::takeFlagChanges()) {
-        const auto spec = std::find_if(config_.flags.begin(), config_.flags.end(),
-                                       [&](const FlagSpec& f) { return f.name == change.name; });
-        if (spec == config_.flags.end() || !spec->live) continue;
-        if (!change.present) {
-            options_.sampleFlags.erase(change.name);
-            continue;
-        }
-        try {
-            const std::vector<std::string> args =
-                spec->kind == FlagSpec::Kind::Switch ? std::vector<std::string>{change.name}
-                                                     : std::vector<std::string>{change.name, change.value};
-            const Options parsed = parseOptions(args, config_.flags);
-            options_.sampleFlags[change.name] = parsed.sampleFlags.at(change.name);
-        } catch (const UsageError& e) {
-            std::fprintf(stderr, "%s: error: %s\n", config_.name.c_str(), e.what());
-        }
+        setLiveFlag(change.name,
+                    change.present ? std::optional<std::string>(change.value) : std::nullopt);
     }
 #endif
     if (input.togglePanel && panel_) {
@@ -524,6 +510,27 @@ bool App::nextFrame() {
     return true;
 }
 
+bool App::setLiveFlag(const std::string& name, const std::optional<std::string>& value) {
+    const auto spec = std::find_if(config_.flags.begin(), config_.flags.end(),
+                                   [&](const FlagSpec& f) { return f.name == name; });
+    if (spec == config_.flags.end() || !spec->live) return false;
+    if (!value) {
+        options_.sampleFlags.erase(name);
+        return true;
+    }
+    try {
+        // The command line's own checks, the sample's `refusing` included.
+        const std::vector<std::string> args = spec->kind == FlagSpec::Kind::Switch
+                                                  ? std::vector<std::string>{name}
+                                                  : std::vector<std::string>{name, *value};
+        options_.sampleFlags[name] = parseOptions(args, config_.flags).sampleFlags.at(name);
+        return true;
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "%s: error: %s\n", config_.name.c_str(), e.what());
+        return false;
+    }
+}
+
 void App::updatePanel(const InputFrame& input) {
     panelHasMouse_ = false;
     if (!panel_) return;
@@ -533,28 +540,17 @@ void App::updatePanel(const InputFrame& input) {
                        .paused = paused_};
     // Headless (a script, --panel) the panel's clock is a steady 60 frames a second.
     const float delta = headless() || deltaTime_ <= 0.0f ? 1.0f / 60.0f : deltaTime_;
-    const std::map<std::string, std::string> before = options_.sampleFlags;
-    const std::vector<std::string> changed =
-        panel_->begin({.cursor = input.cursor,
-                       .leftButton = input.leftButton,
-                       .scroll = input.scroll,
-                       .deltaSeconds = delta},
-                      {width(), height()}, options_.sampleFlags, status, panelShown_);
-    // A control's value passes the command line's own checks, or the flag keeps its value (09's
-    // attenuation terms may not all be 0, whatever the sliders say).
-    for (const std::string& name : changed) {
-        const auto value = options_.sampleFlags.find(name);
-        if (value == options_.sampleFlags.end() || value->second.empty()) continue;
-        try {
-            parseOptions(std::vector<std::string>{name, value->second}, config_.flags);
-        } catch (const UsageError& e) {
-            std::fprintf(stderr, "%s: error: %s\n", config_.name.c_str(), e.what());
-            if (const auto old = before.find(name); old != before.end()) {
-                value->second = old->second;
-            } else {
-                options_.sampleFlags.erase(value);
-            }
-        }
+    // The controls write into a copy; each changed value is taken as the page's are.
+    std::map<std::string, std::string> proposed = options_.sampleFlags;
+    for (const std::string& name : panel_->begin({.cursor = input.cursor,
+                                                  .leftButton = input.leftButton,
+                                                  .scroll = input.scroll,
+                                                  .deltaSeconds = delta},
+                                                 {width(), height()}, proposed, status,
+                                                 panelShown_)) {
+        const auto value = proposed.find(name);
+        setLiveFlag(name, value == proposed.end() ? std::nullopt
+                                                  : std::optional<std::string>(value->second));
     }
     panelHasMouse_ = panel_->wantsMouse();
     if (status.pauseClicked) {

@@ -152,6 +152,10 @@ private:
     void checkGlErrors(const char* where);
     void writeScreenshot(const std::string& path);
     void updatePanel(const InputFrame& input);
+    // A live flag's new value from the panel or the page (nullopt: a switch turned off), taken
+    // through the command line's checks; a refused one is one line, and the flag keeps its
+    // value. False for a value refused or a flag that is not live.
+    bool setLiveFlag(const std::string& name, const std::optional<std::string>& value);
     bool mouseLook() const;  // the fly camera looks with the captured cursor (no panel shown)
     std::string frameDescription() const;
     std::string program_;  // the executable's name, for commandLine

@@ -51,14 +51,6 @@ std::string sliderText(double value) {
     return flagNumberText(std::strtod(text, nullptr));
 }
 
-std::vector<double> numbersOf(const std::string& text) {
-    std::vector<double> numbers;
-    std::stringstream stream(text);
-    std::string part;
-    while (std::getline(stream, part, ',')) numbers.push_back(std::strtod(part.c_str(), nullptr));
-    return numbers;
-}
-
 // The value a control shows: the flag's text when given, else its default.
 std::string currentText(const FlagSpec& spec, const std::map<std::string, std::string>& values) {
     const auto found = values.find(spec.name);
@@ -162,8 +154,8 @@ bool Panel::State::control(const FlagSpec& spec, std::map<std::string, std::stri
             break;
         }
         case FlagSpec::Kind::Numbers: {
-            std::vector<double> numbers = numbersOf(text);
-            numbers.resize(size_t(std::max(spec.count, 1)), spec.min);
+            // (the flag's text passed its checks: given, the default, or taken by setLiveFlag)
+            std::vector<double> numbers = parseNumbersFlag(spec, text);
             std::vector<float> floats(numbers.begin(), numbers.end());
             const float min = float(spec.min), max = float(spec.max);
             noteFrame(spec.name, width);

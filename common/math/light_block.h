@@ -34,6 +34,7 @@ struct PackedLight {
     glm::vec4 colorQuadratic{0.0f};
     glm::vec4 typeCutoffOuterIntensity{0.0f};
 
+    bool operator==(const PackedLight&) const = default;
     LightType type() const { return LightType(int(typeCutoffOuterIntensity.x)); }
     glm::vec3 position() const { return glm::vec3(positionConstant); }
     glm::vec3 forward() const { return glm::vec3(forwardLinear); }

@@ -52,10 +52,7 @@ int main(int argc, char** argv) try {
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
-        if (app.shadersReloaded()) {
-            precompute();
-            app.bindRenderTarget();  // the frame's, after the precomputation's own
-        }
+        if (app.shadersReloaded()) precompute();  // (the passes give back the frame's target)
         const pbr::TextureCube& environmentMap = environment->environmentMap();
         const int lightCount = app.flagInt("--lights");
         const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));

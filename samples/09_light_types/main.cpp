@@ -74,6 +74,7 @@ int main(int argc, char** argv) try {
     const pbr::GpuMesh floorMesh(pbr::quad());
 
     pbr::LightBuffer lightBuffer;
+    std::vector<pbr::PackedLight> uploaded;  // what the buffer holds
 
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
@@ -92,7 +93,10 @@ int main(int argc, char** argv) try {
         }
         const auto moving = light_types::movingLights(app.flagInt("--point-lights"), app.time());
         lights.insert(lights.end(), moving.begin(), moving.end());
-        lightBuffer.upload(lights);
+        if (lights != uploaded || app.frameIndex() == 0) {  // a change in the panel, or a moving light
+            lightBuffer.upload(lights);
+            uploaded = lights;
+        }
 
         glClearColor(0.02f, 0.02f, 0.03f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
