@@ -2,6 +2,12 @@
 """Runs every sample's --benchmark headless and prints a markdown table.
 
     scripts/bench.py [--build build/release] [--size 1280x720] [--msaa 4] [--frames 30]
+    scripts/bench.py --web [--runs 5]
+
+--web instead opens every page of the browser build (build/web, ./build.sh web) as a user does,
+each --runs times in a fresh headless Chromium (software WebGL 2), and gives each page's weight
+(the page and the bundles it loads) and how long after opening its first frame was drawn (real
+time: the page's own mark, scripts/first_frame.js), the median and the range.
 
 Each sample draws one warm-up frame, then the measured frames; the table gives the median and
 95th percentile frame time, the precompute time and the start-up time (App created -> first
@@ -16,6 +22,7 @@ import json
 import os
 import pathlib
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -29,7 +36,11 @@ def main() -> int:
     parser.add_argument("--msaa", default="4")
     parser.add_argument("--frames", default="30")
     parser.add_argument("--backend", default=None, help="osmesa or egl (default: automatic)")
+    parser.add_argument("--web", action="store_true", help="time the pages of build/web instead")
+    parser.add_argument("--runs", type=int, default=5, help="with --web: openings of each page")
     args = parser.parse_args()
+    if args.web:
+        return bench_web(root, args.runs)
 
     bin_dir = pathlib.Path(args.build) / "bin"
     samples = sorted(p for p in bin_dir.glob("*") if re.fullmatch(r"\d\d_\w+", p.name))
@@ -75,6 +86,44 @@ def main() -> int:
     for r in rows:
         print(f"| {r['sample']} | {r['median_ms']:.1f} | {r['p95_ms']:.1f} | {r['precompute_s']:.2f} "
               f"| {r['startup_s']:.2f} | {r['width']}x{r['height']} | {r['msaa']} | {r['backend']} | {r['renderer']} |")
+    return 0
+
+
+def page_weight(page):
+    """The page's bytes with the bundles it always loads (web/embed.py), in MB, and the bundles:
+    ["assets/materials.js", ""] always, ["assets/materials.js", "--textured"] with that flag."""
+    text = page.read_text(encoding="utf-8", errors="replace")
+    bundles = sorted(set(re.findall(r'\["(assets/[^"]+\.js)", "([^"]*)"\]', text)))
+    size = lambda bundle: (page.parent / bundle).stat().st_size
+    always = page.stat().st_size + sum(size(b) for b, flag in bundles if not flag)
+    with_all = page.stat().st_size + sum(size(b) for b, _ in bundles)
+    return always / 1e6, with_all / 1e6, bundles
+
+
+def bench_web(root, runs):
+    web = root / "build" / "web"
+    pages = sorted(p for p in web.glob("*.html") if re.fullmatch(r"\d\d_\w+\.html", p.name))
+    chromium = shutil.which("chromium-headless-shell") or shutil.which("chromium")
+    if not pages or not chromium or not shutil.which("node"):
+        print("bench.py: --web needs build/web (./build.sh web), node and Chromium", file=sys.stderr)
+        return 1
+    print("| page | weight MB | with every bundle MB | bundles | first frame s (median) | range s |")
+    print("| --- | ---: | ---: | --- | ---: | --- |")
+    for page in pages:
+        print(f"bench.py: {page.name} ...", file=sys.stderr)
+        times = []
+        for _ in range(runs):
+            run = subprocess.run(["node", str(root / "scripts" / "first_frame.js"), chromium,
+                                  page.resolve().as_uri()], capture_output=True, text=True)
+            if run.returncode != 0:
+                print(f"bench.py: {page.name}: {run.stderr.strip()}", file=sys.stderr)
+                return 1
+            times.append(json.loads(run.stdout)["first_frame_ms"] / 1000)
+        times.sort()
+        weight, with_all, bundles = page_weight(page)
+        names = ", ".join(b + (f" (with {flag})" if flag else "") for b, flag in bundles)
+        print(f"| {page.stem} | {weight:.1f} | {with_all:.1f} | {names or '-'} | "
+              f"{times[len(times) // 2]:.2f} | {times[0]:.2f}-{times[-1]:.2f} |")
     return 0
 
 

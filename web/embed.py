@@ -1,24 +1,65 @@
 #!/usr/bin/python3
-"""Puts a web sample's files (its shaders and assets) into its page: a script, where the shell
-(web/shell.html) has its <!-- pbr:files --> marker, that writes them into the page's own file
-system before main() runs, the bytes in base64.
+"""Puts a web sample's files (its shaders and assets) into its page, or into a bundle that
+several pages share, as base64 text the page makes files of its own file system from before
+main() runs. A file's bytes are decoded when the program first reads them (a page that shows one
+material set of five decodes one), files with the same bytes are carried once, and a PNG's
+image data is deflated again at zlib's best (the same pixels in a third less: png_redeflated).
 
-    web/embed.py --page build/web/05_ibl_specular.html SOURCE@/DESTINATION ...
+    web/embed.py --page build/web/05_ibl_specular.html [--bundle assets/materials.js[@FLAG]]
+                 SOURCE@/DESTINATION ...
+    web/embed.py --write-bundle build/web/assets/materials.js SOURCE@/DESTINATION ...
+
+--page writes, where the shell (web/shell.html) has its <!-- pbr:files --> marker, a script with
+the files and the loader. --bundle names a bundle (a path relative to the page) the page loads
+before main(), always, or only when its command line holds FLAG (05 reads the material sets
+only with --textured). --write-bundle writes such a bundle: a script of its own, loaded with
+<script src>, so that the pages open from file:// too and the gallery carries the material
+sets once, not in every page that shows them.
 
 A SOURCE folder is taken whole. The files travel as text beside the program, not inside the
 wasm (browsers refuse to compile a module of more than 8 MB at once, and the page compiles its
 module before main runs, so that a capture never races the start-up), and after emscripten
-linked the page (which would otherwise parse and minify megabytes of base64). The page is
-rewritten whole, or removed when its files cannot be put in. Standard library only.
+linked the page (which would otherwise parse and minify megabytes of base64). The output is
+written whole, or removed when its files cannot be put in. Standard library only.
 """
 import argparse
 import base64
 import json
 import pathlib
+import struct
 import sys
+import zlib
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 from whole_file import write_whole  # noqa: E402
+
+# The page's side: Module.pbrFiles(data, files) makes each file of the page's file system: an
+# empty file of the right size whose contents (MEMFS keeps them in node.contents) are decoded at
+# their first use, then kept as a plain value. Bundles call it when they have loaded.
+LOADER = """
+Module["pbrFiles"] = function (data, files) {
+  var FS = Module.FS;
+  function decode(text) {
+    var binary = atob(text), bytes = new Uint8Array(binary.length);
+    for (var i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);
+    return bytes;
+  }
+  files.forEach(function (file) {
+    var path = file[0], text = data[file[1]];
+    FS.mkdirTree(path.substring(0, path.lastIndexOf("/")));
+    FS.writeFile(path, new Uint8Array(0));
+    var node = FS.lookupPath(path).node;
+    var padding = text.slice(-2) === "==" ? 2 : text.slice(-1) === "=" ? 1 : 0;
+    node.usedBytes = text.length / 4 * 3 - padding;
+    function keep(value) {
+      Object.defineProperty(node, "contents", {value: value, writable: true, configurable: true,
+                                               enumerable: true});
+    }
+    Object.defineProperty(node, "contents", {configurable: true, enumerable: true, set: keep,
+      get: function () { var bytes = decode(text); keep(bytes); return bytes; }});
+  });
+};
+"""
 
 
 def files_of(source, destination):
@@ -32,45 +73,119 @@ def files_of(source, destination):
         yield path, destination.rstrip("/") + "/" + path.relative_to(source).as_posix()
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--page", required=True)
-    parser.add_argument("entries", nargs="+", help="SOURCE@/DESTINATION")
-    args = parser.parse_args()
+def png_redeflated(content):
+    """A PNG's bytes with its image data deflated again by zlib at level 9: the same rows and
+    filters, so the same pixels, a third smaller than what stb_image_write's fixed-Huffman
+    deflate makes of the material sets. Anything else (or a PNG that would not shrink) as it
+    is."""
+    signature = b"\x89PNG\r\n\x1a\n"
+    if not content.startswith(signature):
+        return content
+    chunks, data, at = [], b"", len(signature)
+    while at + 12 <= len(content):
+        size, kind = struct.unpack(">I4s", content[at:at + 8])
+        body = content[at + 8:at + 8 + size]
+        at += 12 + size
+        if kind == b"IDAT":
+            if data == b"":
+                chunks.append(None)  # where the image data goes
+            data += body
+        else:
+            chunks.append((kind, body))
+    if at != len(content) or data == b"":
+        return content
+    try:
+        deflated = zlib.compress(zlib.decompress(data), 9)
+    except zlib.error:
+        return content
+    out = [signature]
+    for chunk in chunks:
+        kind, body = chunk if chunk else (b"IDAT", deflated)
+        out.append(struct.pack(">I4s", len(body), kind) + body +
+                   struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF))
+    smaller = b"".join(out)
+    return smaller if len(smaller) < len(content) else content
 
-    lines = ["<script>",
-             "// web/embed.py: this page's files, written into its file system before main(); the",
-             "// script then leaves the page (its megabytes of text are not the page's content)",
-             "(function (script) {",
-             'Module["preRun"].push(function () {',
-             "  function put(path, text) {",
-             "    var binary = atob(text), bytes = new Uint8Array(binary.length);",
-             "    for (var i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);",
-             '    Module.FS.mkdirTree(path.substring(0, path.lastIndexOf("/")));',
-             "    Module.FS.writeFile(path, bytes);",
-             "  }"]
-    for entry in args.entries:
+
+def data_and_files(entries):
+    """The JavaScript lines that fill `data` (each distinct content once) and `files`."""
+    lines, seen = ["var data = [], files = [];"], {}
+    for entry in entries:
         source, _, destination = entry.partition("@")
         for path, target in files_of(source, destination):
-            data = base64.b64encode(path.read_bytes()).decode("ascii")
-            lines.append(f"  put({json.dumps(target)}, \"{data}\");")
-    lines += ["  script.remove();", "});", "})(document.currentScript);", "</script>"]
+            content = png_redeflated(path.read_bytes())
+            if content not in seen:
+                seen[content] = len(seen)
+                lines.append(f"data.push(\"{base64.b64encode(content).decode('ascii')}\");")
+            lines.append(f"files.push([{json.dumps(target)}, {seen[content]}]);")
+    return lines
 
+
+def page_script(entries, bundles):
+    needs = [list(b.partition("@")[::2]) for b in bundles]  # [src, flag or ""]
+    return "\n".join([
+        "<script>",
+        "// web/embed.py: this page's files, made files of its file system before main(), each",
+        "// decoded at its first read, and the bundles it loads; the script then leaves the page",
+        "// (its megabytes of text are not the page's content)",
+        "(function (script) {",
+        LOADER.strip(),
+        *data_and_files(entries),
+        f"var bundles = {json.dumps(needs)};",
+        'Module["preRun"].push(function () {',
+        '  Module["pbrFiles"](data, files);',
+        "  bundles.forEach(function (bundle) {",
+        "    if (bundle[1] && Module.arguments.indexOf(bundle[1]) < 0) return;",
+        '    Module["pbrStatus"]("loading " + bundle[0]);',
+        "    Module.addRunDependency(bundle[0]);",
+        '    var element = document.createElement("script");',
+        "    element.src = bundle[0];",
+        "    element.onload = function () { element.remove(); Module.removeRunDependency(bundle[0]); };",
+        "    element.onerror = function () {",
+        '      Module["pbrFailed"]("error: " + bundle[0] + ": cannot be loaded (it belongs beside the page)");',
+        "    };",
+        "    document.body.appendChild(element);",
+        "  });",
+        "  script.remove();",
+        "});",
+        "})(document.currentScript);",
+        "</script>"])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    target = parser.add_mutually_exclusive_group(required=True)
+    target.add_argument("--page")
+    target.add_argument("--write-bundle")
+    parser.add_argument("--bundle", action="append", default=[], help="SRC[@FLAG], with --page")
+    parser.add_argument("entries", nargs="*", help="SOURCE@/DESTINATION")
+    args = parser.parse_intermixed_args()
+
+    if args.write_bundle:
+        text = "\n".join(["// web/embed.py: files shared by several pages (Module.pbrFiles: the",
+                          "// page's loader makes them files of its file system)",
+                          "(function () {", *data_and_files(args.entries),
+                          'Module["pbrFiles"](data, files);', "})();", ""])
+        out = pathlib.Path(args.write_bundle)
+        out.parent.mkdir(parents=True, exist_ok=True)
+        write_whole(out, text)
+        return
     out = pathlib.Path(args.page)
     page = out.read_text(encoding="utf-8")
     marker = "<!-- pbr:files -->"
     if page.count(marker) != 1:
         raise SystemExit(f"embed.py: {out}: no single {marker} marker (already packed, or not "
                          "made from web/shell.html)")
-    page = page.replace(marker, "\n".join(lines))
+    page = page.replace(marker, page_script(args.entries, args.bundle))
     write_whole(out, page)
+
 
 if __name__ == "__main__":
     try:
         main()
     except BaseException:
         # a page without its files would fail at its first read: no page instead
-        page = [a for a in sys.argv if a.endswith(".html")]
-        for path in page:
-            pathlib.Path(path).unlink(missing_ok=True)
+        for i, arg in enumerate(sys.argv):
+            if arg in ("--page", "--write-bundle") and i + 1 < len(sys.argv):
+                pathlib.Path(sys.argv[i + 1]).unlink(missing_ok=True)
         raise

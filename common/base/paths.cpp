@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "base/error.h"
@@ -89,10 +90,22 @@ std::string readTextFile(const fs::path& path) {
     if (fs::is_directory(path, ec)) throw Error(displayPath(path) + ": is a directory, not a file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(displayPath(path) + ": cannot open: " + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
+    // One read of the whole size (a stream copied through its buffer took 0.25 s for 1.6 MB in
+    // a page); a file still growing or shrinking is read to its end.
+    std::string text;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (!ec && size < std::uintmax_t(std::numeric_limits<std::streamsize>::max())) {
+        text.resize(size_t(size));
+        in.read(text.data(), std::streamsize(size));
+        text.resize(size_t(in.gcount()));
+        if (in.bad()) throw Error(displayPath(path) + ": read failed");
+        if (in.eof()) return text;
+        in.clear();
+    }
+    std::ostringstream rest;
+    rest << in.rdbuf();
     if (in.bad()) throw Error(displayPath(path) + ": read failed");
-    return text.str();
+    return text + rest.str();
 }
 
 }  // namespace pbr

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "base/paths.h"
+#include "gl/gl.h"
 
 // JavaScript of the page: Module.pbrHandOver (web/shell.html) turns the bytes into a link and
 // into text a test can read.
@@ -17,6 +18,22 @@ EM_JS(void, pbr_hand_over, (const char* name, const unsigned char* bytes, int si
 // An import the build marks as one that suspends the wasm (-sASYNCIFY_IMPORTS).
 EM_ASYNC_JS(void, pbr_wait_for_animation_frame, (), {
     await new Promise(function(resolve) { requestAnimationFrame(function() { resolve(); }); });
+});
+
+// After a rendering update of the browser (an animation frame, then a task after it): what the
+// page shows has been painted.
+EM_ASYNC_JS(void, pbr_wait_for_paint, (), {
+    await new Promise(function(resolve) {
+        requestAnimationFrame(function() { setTimeout(resolve, 0); });
+    });
+});
+
+// The header's status (Module.pbrStatus), and the first frame's mark (Module.pbrFirstFrame).
+EM_JS(void, pbr_status, (const char* text), {
+    if (Module["pbrStatus"]) Module["pbrStatus"](UTF8ToString(text));
+});
+EM_JS(void, pbr_first_frame_drawn, (), {
+    if (Module["pbrFirstFrame"]) Module["pbrFirstFrame"]();
 });
 
 // The controls: Module.pbrDeclareFlags builds them; their changes queue up in the page as
@@ -86,10 +103,22 @@ void handOver(const std::filesystem::path& path) {
 
 namespace {
 bool waited = false;  // main() has given the browser a turn: it ends asynchronously
+bool shownFirstFrame = false;
 int exitCode = 0;
 }  // namespace
 
+void status(const std::string& text) {
+    pbr_status(text.c_str());
+    waited = true;
+    pbr_wait_for_paint();
+}
+
 void waitForNextFrame() {
+    if (!shownFirstFrame) {
+        glFinish();  // drawn, not only queued
+        pbr_first_frame_drawn();
+        shownFirstFrame = true;
+    }
     waited = true;
     pbr_wait_for_animation_frame();
 }

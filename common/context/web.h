@@ -18,7 +18,12 @@ namespace pbr::web {
 // Hands a file the run has written (in the page's memory file system) to the page.
 void handOver(const std::filesystem::path& path);
 // Returns at the browser's next animation frame (the sample's loop is suspended meanwhile).
+// The first call finishes the first frame's GL work and tells the page it is drawn (the header
+// then says "running", and the page keeps the time since it was opened: see docs/web.md).
 void waitForNextFrame();
+// What the page is doing, in its header ("computing sunny_courtyard.environment.ktx"); the
+// browser is given a turn to show it before the work goes on.
+void status(const std::string& text);
 // Once main() has waited for a frame, the browser no longer sees what it returns (emscripten
 // 3.1.6 drops the return value of a main that resumed): the App says how the run ended as it
 // goes, and the page exits with that code right after main() returns.
@@ -40,6 +45,7 @@ void showLabels(int width, int height);
 #else
 inline void handOver(const std::filesystem::path&) {}
 inline void waitForNextFrame() {}
+inline void status(const std::string&) {}
 inline void exitWithAfterMain(int) {}
 #endif
 

@@ -4,6 +4,7 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -114,11 +115,14 @@ namespace {
 // The Radiance RGBE pixel as a float triple, exactly as stb_image converts it (mantissa times
 // 2^(exponent - 136); exponent 0 is black), so that our decoder and stb's agree to the bit.
 void rgbeToFloat(const std::uint8_t* rgbe, float* rgb) {
-    if (rgbe[3] == 0) {
-        rgb[0] = rgb[1] = rgb[2] = 0.0f;
-        return;
-    }
-    const auto scale = float(std::ldexp(1.0f, int(rgbe[3]) - (128 + 8)));
+    // 2^(e - 136) for each exponent byte, made once (a call to ldexp per pixel was most of the
+    // decoding time in a page); every value is a power of two a float holds exactly
+    static const auto scales = [] {
+        std::array<float, 256> table{};
+        for (int e = 1; e < 256; ++e) table[size_t(e)] = float(std::ldexp(1.0f, e - (128 + 8)));
+        return table;
+    }();
+    const float scale = scales[rgbe[3]];  // exponent 0: black
     for (int c = 0; c < 3; ++c) rgb[c] = float(rgbe[c]) * scale;
 }
 }  // namespace

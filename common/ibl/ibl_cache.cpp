@@ -6,6 +6,7 @@
 
 #include "base/error.h"
 #include "base/paths.h"
+#include "context/web.h"
 #include "files/image.h"
 #include "gl/shader.h"
 #include "ibl/ibl.h"
@@ -66,6 +67,12 @@ std::string shaderCodeHash(const std::string& vertex, const std::string& fragmen
 std::string renderer() {
     const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     return name ? name : "unknown";
+}
+
+// A cube map's file: its key is the baked key with the renderer that computes it.
+MapFile cubeMapFile(std::string name, std::string bakedKey, std::string contents) {
+    return {std::move(name), bakedKey + "; renderer " + renderer(), std::move(contents),
+            bakedKey};
 }
 
 }  // namespace
@@ -141,7 +148,8 @@ void IblCache::store(const MapFile& file, KtxImage image) {
 }
 
 template <typename T>
-T IblCache::timed(const std::function<T()>& compute) {
+T IblCache::timed(const MapFile& file, const std::function<T()>& compute) {
+    web::status("computing " + file.name);  // a page says what it is doing (no-op natively)
     const auto start = std::chrono::steady_clock::now();
     T result = compute();
     finishGl();
@@ -151,7 +159,16 @@ T IblCache::timed(const std::function<T()>& compute) {
 }
 
 TextureCube IblCache::cube(const MapFile& file, const std::function<TextureCube()>& compute) {
-    if (!dir_) return timed(compute);
+    if (kWebGl) {
+        const fs::path baked = iblDir() / file.name;
+        std::error_code ec;
+        if (fs::exists(baked, ec)) {
+            if (std::optional<KtxImage> image = load(baked, file.bakedKey)) {
+                return TextureCube::fromKtx(*image);
+            }
+        }
+    }
+    if (!dir_) return timed(file, compute);
     const fs::path path = *dir_ / file.name;
     if (std::optional<KtxImage> image = load(path, file.key)) {
         try {
@@ -161,14 +178,14 @@ TextureCube IblCache::cube(const MapFile& file, const std::function<TextureCube(
                          error.what());
         }
     }
-    TextureCube cube = timed(compute);
+    TextureCube cube = timed(file, compute);
     store(file, cube.toKtx());
     return cube;
 }
 
 std::optional<Texture2D> IblCache::loadTexture(const fs::path& path, const MapFile& file,
                                                KtxFormat format) {
-    if (std::optional<KtxImage> image = load(path, file.key)) {
+    if (std::optional<KtxImage> image = load(path, file.bakedKey)) {
         if (image->format == format && image->faces == 1) return Texture2D::fromKtx(*image);
         std::fprintf(stderr, "note: %s: not the expected format; not used\n",
                      displayPath(path).c_str());
@@ -182,11 +199,11 @@ Texture2D IblCache::texture(const MapFile& file, KtxFormat format,
     if (std::optional<Texture2D> baked = loadTexture(iblDir() / file.name, file, format)) {
         return std::move(*baked);
     }
-    if (!dir_) return timed(compute);
+    if (!dir_) return timed(file, compute);
     if (std::optional<Texture2D> cached = loadTexture(*dir_ / file.name, file, format)) {
         return std::move(*cached);
     }
-    Texture2D texture = timed(compute);
+    Texture2D texture = timed(file, compute);
     store(file, texture.toKtx(format));
     return texture;
 }
@@ -196,33 +213,33 @@ IblEnvironment::IblEnvironment(IblCache& cache, fs::path hdr)
     environmentKey_ =
         std::string(kCodeVersion) + "; environment " + std::to_string(kEnvironmentSize) +
         " full mips; source " + hdr_.filename().string() + " " + contentHash(readTextFile(hdr_)) +
-        "; shaders " + shaderCodeHash("ibl/cubemap.vert", "ibl/equirect_to_cube.frag") +
-        "; renderer " + renderer();
+        "; shaders " + shaderCodeHash("ibl/cubemap.vert", "ibl/equirect_to_cube.frag");
 }
 
 MapFile IblEnvironment::environmentFile() const {
-    return {hdr_.stem().string() + ".environment.ktx", environmentKey_,
-            "environment cube map from " + hdr_.filename().string() + ", " +
-                std::to_string(kEnvironmentSize) + "^2, full mip chain"};
+    return cubeMapFile(hdr_.stem().string() + ".environment.ktx", environmentKey_,
+                       "environment cube map from " + hdr_.filename().string() + ", " +
+                           std::to_string(kEnvironmentSize) + "^2, full mip chain");
 }
 
 MapFile IblEnvironment::irradianceFile(int size, float sampleDelta) const {
-    return {hdr_.stem().string() + ".irradiance.ktx",
-            "irradiance " + std::to_string(size) + " delta " + std::to_string(sampleDelta) +
-                "; shaders " + shaderCodeHash("ibl/cubemap.vert", "ibl/irradiance.frag") +
-                "; from " + environmentKey_,
-            "diffuse irradiance / pi, " + std::to_string(size) + "^2 cube map"};
+    return cubeMapFile(
+        hdr_.stem().string() + ".irradiance.ktx",
+        "irradiance " + std::to_string(size) + " delta " + std::to_string(sampleDelta) +
+            "; shaders " + shaderCodeHash("ibl/cubemap.vert", "ibl/irradiance.frag") + "; from " +
+            environmentKey_,
+        "diffuse irradiance / pi, " + std::to_string(size) + "^2 cube map");
 }
 
 MapFile IblEnvironment::prefilteredFile(int size, int levels, int samples) const {
-    return {hdr_.stem().string() + ".prefiltered.ktx",
-            "prefiltered " + std::to_string(size) + " levels " + std::to_string(levels) +
-                " samples " + std::to_string(samples) + "; shaders " +
-                shaderCodeHash("ibl/cubemap.vert", "ibl/prefilter.frag") + "; from " +
-                environmentKey_,
-            "GGX-prefiltered specular cube map, " + std::to_string(size) +
-                "^2, mip m for roughness m / " + std::to_string(levels - 1) + ", " +
-                std::to_string(samples) + " samples"};
+    return cubeMapFile(hdr_.stem().string() + ".prefiltered.ktx",
+                       "prefiltered " + std::to_string(size) + " levels " +
+                           std::to_string(levels) + " samples " + std::to_string(samples) +
+                           "; shaders " + shaderCodeHash("ibl/cubemap.vert", "ibl/prefilter.frag") +
+                           "; from " + environmentKey_,
+                       "GGX-prefiltered specular cube map, " + std::to_string(size) +
+                           "^2, mip m for roughness m / " + std::to_string(levels - 1) + ", " +
+                           std::to_string(samples) + " samples");
 }
 
 const TextureCube& IblEnvironment::environmentMap() {
@@ -273,13 +290,15 @@ MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels) {
     const bool sheen = channels == BrdfLutChannels::ScaleBiasSheen;
     const std::string name =
         std::string(sheen ? "brdf_lut_sheen_" : "brdf_lut_") + std::to_string(size);
-    return {name + ".ktx",
-            std::string(kCodeVersion) + "; " + name + " samples " + std::to_string(samples) +
-                "; shaders " + shaderCodeHash("ibl/fullscreen.vert", "ibl/brdf_lut.frag"),
+    const std::string key = std::string(kCodeVersion) + "; " + name + " samples " +
+                            std::to_string(samples) + "; shaders " +
+                            shaderCodeHash("ibl/fullscreen.vert", "ibl/brdf_lut.frag");
+    return {name + ".ktx", key,
             "BRDF LUT " + std::to_string(size) + "^2, " + std::to_string(samples) +
                 " samples; x = NdotV, y = roughness at texel centres; R = GGX scale, G = GGX "
                 "bias to F0" +
-                (sheen ? ", B = Charlie sheen" : "")};
+                (sheen ? ", B = Charlie sheen" : ""),
+            key};
 }
 
 Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channels) {

@@ -31,6 +31,9 @@ struct MapFile {
     std::string name;      // "sunny_courtyard.irradiance.ktx"
     std::string key;       // input hash, parameters, shader code, renderer
     std::string contents;  // one line for people: sizes, what each channel holds
+    // The key without the renderer: what a map the build baked is stored under (a page reads
+    // those, made on the build's renderer; see IblCache::cube). The same as `key` for a LUT.
+    std::string bakedKey;
 
     // `image` with this map's metadata: pbr.cacheKey, pbr.contents and its orientation.
     KtxImage withMetadata(KtxImage image) const;
@@ -42,8 +45,10 @@ public:
     explicit IblCache(std::optional<std::filesystem::path> dir);
 
     // <dir>/<file.name> when it holds a map made under `file.key`, else `compute()` (stored for
-    // next time). A texture (a BRDF LUT) is first looked for in iblDir(), where the build bakes
-    // it, cache or no cache.
+    // next time). What the build baked into iblDir() comes first, cache or no cache, under
+    // `file.bakedKey`: a texture (a BRDF LUT) everywhere; a cube map (the default environment's
+    // irradiance and prefiltered maps) in a page only, which has no cache to keep what it
+    // computes (natively the cache does that job, keyed by the renderer too).
     TextureCube cube(const MapFile& file, const std::function<TextureCube()>& compute);
     Texture2D texture(const MapFile& file, KtxFormat format,
                       const std::function<Texture2D()>& compute);
@@ -57,7 +62,7 @@ private:
                                          KtxFormat format);
     void store(const MapFile& file, KtxImage image);
     template <typename T>
-    T timed(const std::function<T()>& compute);
+    T timed(const MapFile& file, const std::function<T()>& compute);
 
     std::optional<std::filesystem::path> dir_;
     double computeSeconds_ = 0.0;
@@ -86,7 +91,8 @@ private:
     IblCache& cache_;
     std::filesystem::path hdr_;
     static constexpr int kEnvironmentSize = 512;
-    std::string environmentKey_;  // what the environment cube is made from; every map's source
+    // what the environment cube is made from (the renderer left out); every map's source
+    std::string environmentKey_;
     std::optional<TextureCube> environment_;
 };
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/views.h"
+#include "base/error.h"
 #include "base/paths.h"
 
 namespace pbr {

@@ -1,0 +1,509 @@
+// The native loader: glTF 2.0 (and whatever else Assimp reads) through Assimp 5.2, into a
+// pbr::Model (model.h). Not in the browser build (Debian has no Assimp for WebAssembly): a page
+// reads the compact form of the Model this loader made (model_pack.h).
+#include "gltf/model.h"
+
+#include <assimp/GltfMaterial.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cctype>
+#include <cmath>
+#include <functional>
+#include <set>
+#include <type_traits>
+
+#include "base/error.h"
+#include "base/paths.h"
+#include "files/gltf_file.h"
+
+namespace pbr {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+glm::mat4 toGlm(const aiMatrix4x4& m) {
+    // Assimp is row-major, GLM column-major
+    return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4,
+                     m.b4, m.c4, m.d4);
+}
+
+struct Reader {
+    const aiScene* scene;
+    Model& model;
+    std::string where;  // "<file>: "
+
+    TextureRef texture(const aiMaterial* material, aiTextureType type) {
+        TextureRef ref;
+        aiString path;
+        unsigned uvIndex = 0;
+        if (material->GetTextureCount(type) == 0 ||
+            material->GetTexture(type, 0, &path, nullptr, &uvIndex) != AI_SUCCESS) {
+            return ref;
+        }
+        ref.uvSet = int(uvIndex);
+        readSampler(material, type, ref);
+        const std::string name = path.C_Str();
+        if (!name.empty() && name[0] == '*') {
+            const int index = std::atoi(name.c_str() + 1);
+            if (index < 0 || index >= int(scene->mNumTextures)) {
+                throw Error(where + "texture '" + name + "' is not in the file");
+            }
+            ref.embedded = index;
+            return ref;
+        }
+        if (const aiTexture* embedded = scene->GetEmbeddedTexture(name.c_str())) {
+            for (unsigned i = 0; i < scene->mNumTextures; ++i) {
+                if (scene->mTextures[i] == embedded) ref.embedded = int(i);
+            }
+            return ref;
+        }
+        ref.file = model.file.parent_path() / name;
+        std::error_code ec;
+        if (!fs::is_regular_file(ref.file, ec)) {
+            throw Error(where + "texture '" + name + "' not found (" + displayPath(ref.file) + ")");
+        }
+        return ref;
+    }
+
+    // The glTF sampler and KHR_texture_transform of a texture, as Assimp 5.2 reports them (see
+    // DESIGN.md, "glTF through Assimp 5.2").
+    static void readSampler(const aiMaterial* material, aiTextureType type, TextureRef& ref) {
+        auto wrap = [](int mode) {
+            return mode == aiTextureMapMode_Clamp    ? 33071
+                   : mode == aiTextureMapMode_Mirror ? 33648
+                                                     : 10497;
+        };
+        int mode = aiTextureMapMode_Wrap;
+        if (material->Get(AI_MATKEY_MAPPINGMODE_U(type, 0), mode) == AI_SUCCESS)
+            ref.wrapS = wrap(mode);
+        mode = aiTextureMapMode_Wrap;
+        if (material->Get(AI_MATKEY_MAPPINGMODE_V(type, 0), mode) == AI_SUCCESS)
+            ref.wrapT = wrap(mode);
+        material->Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0), ref.magFilter);
+        material->Get(AI_MATKEY_GLTF_MAPPINGFILTER_MIN(type, 0), ref.minFilter);
+        aiUVTransform uv;
+        if (material->Get(AI_MATKEY_UVTRANSFORM(type, 0), uv) == AI_SUCCESS) {
+            // Assimp turns the extension's offset, rotation and scale into its own convention
+            // (rotation negated, about the image centre, for its flipped v); undo that to get
+            // glTF's values back. Measured on Assimp 5.2: with R the glTF rotation,
+            //   translation.x = offset.x + S.x / 2 (1 - cos R + sin R)
+            //   translation.y = S.y / 2 (sin R + cos R - 1) + 1 - S.y - offset.y
+            const float rotation = -uv.mRotation;
+            const float c = std::cos(rotation), s = std::sin(rotation);
+            const glm::vec2 scale(uv.mScaling.x, uv.mScaling.y);
+            const glm::vec2 offset(
+                uv.mTranslation.x - 0.5f * scale.x * (1.0f - c + s),
+                0.5f * scale.y * (s + c - 1.0f) + 1.0f - scale.y - uv.mTranslation.y);
+            ref.transform = textureTransform(offset, rotation, scale);
+        }
+    }
+
+    Material material(const aiMaterial* m) {
+        Material out;
+        out.name = m->GetName().C_Str();
+        int shading = 0;
+        if (m->Get(AI_MATKEY_SHADING_MODEL, shading) == AI_SUCCESS)
+            out.unlit = shading == aiShadingMode_Unlit;
+        // KHR_materials_pbrSpecularGlossiness: told by its glossiness factor (such a material
+        // still reports metallic and roughness 1, and base colour 1 from the absent
+        // pbrMetallicRoughness). Its diffuse factor and texture are on the diffuse slots.
+        out.specularGlossiness =
+            m->Get(AI_MATKEY_GLOSSINESS_FACTOR, out.glossinessFactor) == AI_SUCCESS;
+        aiColor4D color;
+        if (out.specularGlossiness ? m->Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS
+                                   : (m->Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
+                                      m->Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)) {
+            out.baseColorFactor = {color.r, color.g, color.b, color.a};
+        }
+        out.baseColorTexture =
+            texture(m, out.specularGlossiness ? aiTextureType_DIFFUSE : aiTextureType_BASE_COLOR);
+        if (!out.baseColorTexture.present())
+            out.baseColorTexture = texture(m, aiTextureType_DIFFUSE);
+        m->Get(AI_MATKEY_METALLIC_FACTOR, out.metallicFactor);
+        m->Get(AI_MATKEY_ROUGHNESS_FACTOR, out.roughnessFactor);
+        out.metallicRoughnessTexture = texture(m, aiTextureType_UNKNOWN);
+        out.normalTexture = texture(m, aiTextureType_NORMALS);
+        m->Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), out.normalScale);
+        out.occlusionTexture = texture(m, aiTextureType_LIGHTMAP);
+        m->Get(AI_MATKEY_GLTF_TEXTURE_STRENGTH(aiTextureType_LIGHTMAP, 0), out.occlusionStrength);
+        out.emissiveTexture = texture(m, aiTextureType_EMISSIVE);
+        aiColor3D emissive;
+        if (m->Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS) {
+            out.emissiveFactor = {emissive.r, emissive.g, emissive.b};
+        }
+        if (out.specularGlossiness) {
+            // the factor is $clr.specular; AI_MATKEY_SPECULAR_FACTOR is never set for glTF
+            aiColor3D specular;
+            if (m->Get(AI_MATKEY_COLOR_SPECULAR, specular) == AI_SUCCESS) {
+                out.specularFactor = {specular.r, specular.g, specular.b};
+            }
+            out.specularGlossinessTexture = texture(m, aiTextureType_SPECULAR);
+        }
+        aiString alphaMode;
+        if (m->Get(AI_MATKEY_GLTF_ALPHAMODE, alphaMode) == AI_SUCCESS) {
+            const std::string mode = alphaMode.C_Str();
+            out.alphaMode = mode == "MASK"    ? AlphaMode::Mask
+                            : mode == "BLEND" ? AlphaMode::Blend
+                                              : AlphaMode::Opaque;
+        }
+        m->Get(AI_MATKEY_GLTF_ALPHACUTOFF, out.alphaCutoff);
+        int twoSided = 0;
+        if (m->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) out.doubleSided = twoSided != 0;
+        return out;
+    }
+
+    MeshData mesh(const aiMesh* in) {
+        const std::string what = where + "mesh '" + in->mName.C_Str() + "': ";
+        MeshData out;
+        const unsigned n = in->mNumVertices;
+        if (!in->mVertices || n == 0) throw Error(what + "no vertices");
+        out.positions.reserve(n);
+        for (unsigned i = 0; i < n; ++i) {
+            const aiVector3D& p = in->mVertices[i];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+                throw Error(what + "vertex " + std::to_string(i) + " has a non-finite position");
+            }
+            out.positions.push_back({p.x, p.y, p.z});
+        }
+        for (unsigned i = 0; i < n; ++i) {
+            glm::vec3 normal(0.0f, 0.0f, 1.0f);
+            if (in->mNormals) {
+                const aiVector3D& v = in->mNormals[i];
+                const glm::vec3 candidate(v.x, v.y, v.z);
+                const float length = glm::length(candidate);
+                // a zero or broken normal (BoxBadNormals) becomes +Z rather than NaN in the shader
+                if (std::isfinite(length) && length > 1e-6f) normal = candidate / length;
+            }
+            out.normals.push_back(normal);
+            glm::vec2 uv(0.0f);  // glTF: a missing uv is (0, 0)
+            if (in->mTextureCoords[0]) {
+                // Assimp turns glTF's v upside down; turn it back, so images load top row first
+                uv = {in->mTextureCoords[0][i].x, 1.0f - in->mTextureCoords[0][i].y};
+            }
+            out.uvs.push_back(uv);
+            if (in->mTextureCoords[1])
+                out.uvs1.push_back({in->mTextureCoords[1][i].x, 1.0f - in->mTextureCoords[1][i].y});
+            glm::vec4 tangent(1.0f, 0.0f, 0.0f, 1.0f);
+            if (in->mTangents && in->mBitangents) {
+                const glm::vec3 t(in->mTangents[i].x, in->mTangents[i].y, in->mTangents[i].z);
+                const glm::vec3 b(in->mBitangents[i].x, in->mBitangents[i].y, in->mBitangents[i].z);
+                // Assimp's bitangent follows its flipped v, i.e. towards the image's top
+                if (std::isfinite(glm::dot(t, t)) && glm::length(t) > 1e-6f) {
+                    tangent = glm::vec4(glm::normalize(t),
+                                        glm::dot(glm::cross(normal, t), b) < 0.0f ? -1.0f : 1.0f);
+                }
+            }
+            out.tangents.push_back(tangent);
+            if (in->mColors[0]) {
+                const aiColor4D& c = in->mColors[0][i];
+                out.colors.push_back({c.r, c.g, c.b, c.a});
+            }
+        }
+        out.indices.reserve(size_t(in->mNumFaces) * 3);
+        for (unsigned f = 0; f < in->mNumFaces; ++f) {
+            const aiFace& face = in->mFaces[f];
+            if (face.mNumIndices != 3) continue;  // points and lines are not drawn
+            for (unsigned k = 0; k < 3; ++k) {
+                if (face.mIndices[k] >= n) {
+                    throw Error(what + "index " + std::to_string(face.mIndices[k]) +
+                                " out of range (" + std::to_string(n) + " vertices)");
+                }
+                out.indices.push_back(face.mIndices[k]);
+            }
+        }
+        return out;
+    }
+
+    void visit(const aiNode* node, const glm::mat4& parent, int depth,
+               std::set<const aiNode*>& seen) {
+        if (depth > 256 || !seen.insert(node).second)
+            throw Error(where + "the node hierarchy loops or is too deep");
+        const glm::mat4 transform = parent * toGlm(node->mTransformation);
+        for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+            if (node->mMeshes[i] >= scene->mNumMeshes)
+                throw Error(where + "a node names a mesh that does not exist");
+            const aiMesh* in = scene->mMeshes[node->mMeshes[i]];
+            if (!(in->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+            ModelPrimitive primitive{mesh(in), int(in->mMaterialIndex), transform};
+            if (primitive.mesh.indices.empty()) continue;
+            if (primitive.material < 0 || primitive.material >= int(model.materials.size())) {
+                throw Error(where + "a mesh names a material that does not exist");
+            }
+            model.primitives.push_back(std::move(primitive));
+        }
+        for (unsigned i = 0; i < node->mNumChildren; ++i)
+            visit(node->mChildren[i], transform, depth + 1, seen);
+    }
+};
+
+// Gives every triangle of a mesh its own three vertices (points and lines are left as they are:
+// they are not drawn). Bones and morph targets are not carried over; they are not drawn either.
+void unweld(aiMesh* mesh) {
+    if (!(mesh->mPrimitiveTypes == aiPrimitiveType_TRIANGLE) || mesh->mNumFaces == 0) return;
+    const unsigned count = mesh->mNumFaces * 3;
+    auto remap = [&](auto*& data) {
+        if (!data) return;
+        using T = std::remove_reference_t<decltype(*data)>;
+        T* out = new T[count];
+        for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+            for (unsigned k = 0; k < 3; ++k) out[f * 3 + k] = data[mesh->mFaces[f].mIndices[k]];
+        }
+        delete[] data;
+        data = out;
+    };
+    remap(mesh->mVertices);
+    for (auto*& set : mesh->mTextureCoords) remap(set);
+    for (auto*& set : mesh->mColors) remap(set);
+    delete[] mesh->mTangents;
+    delete[] mesh->mBitangents;
+    mesh->mTangents = mesh->mBitangents = nullptr;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+        for (unsigned k = 0; k < 3; ++k) mesh->mFaces[f].mIndices[k] = f * 3 + k;
+    }
+    mesh->mNumVertices = count;
+    for (unsigned i = 0; i < mesh->mNumBones; ++i) delete mesh->mBones[i];
+    delete[] mesh->mBones;
+    mesh->mBones = nullptr;
+    mesh->mNumBones = 0;
+    for (unsigned i = 0; i < mesh->mNumAnimMeshes; ++i) delete mesh->mAnimMeshes[i];
+    delete[] mesh->mAnimMeshes;
+    mesh->mAnimMeshes = nullptr;
+    mesh->mNumAnimMeshes = 0;
+}
+
+// The global transform of a node: its own and its parents'.
+glm::mat4 globalTransform(const aiNode* node) {
+    glm::mat4 transform(1.0f);
+    for (int depth = 0; node && depth < 256; node = node->mParent, ++depth)
+        transform = toGlm(node->mTransformation) * transform;
+    return transform;
+}
+
+// KHR_lights_punctual: Assimp hands each light over at its node's origin, shining down the
+// node's -Z, with colour x intensity as its diffuse colour; the range is node metadata.
+std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& where) {
+    std::vector<PunctualLight> lights;
+    for (unsigned i = 0; i < scene->mNumLights; ++i) {
+        const aiLight* in = scene->mLights[i];
+        PunctualLight light;
+        light.name = in->mName.C_Str();
+        switch (in->mType) {
+            case aiLightSource_DIRECTIONAL:
+                light.type = PunctualLight::Type::Directional;
+                break;
+            case aiLightSource_POINT:
+                light.type = PunctualLight::Type::Point;
+                break;
+            case aiLightSource_SPOT:
+                light.type = PunctualLight::Type::Spot;
+                break;
+            default:
+                continue;
+        }
+        light.color = {in->mColorDiffuse.r, in->mColorDiffuse.g, in->mColorDiffuse.b};
+        glm::mat4 transform(1.0f);
+        const aiNode* node = scene->mRootNode->FindNode(in->mName);
+        if (node) {
+            transform = globalTransform(node);
+            float range = 0.0f;
+            if (node->mMetaData && node->mMetaData->Get("PBR_LightRange", range))
+                light.range = range;
+        }
+        const glm::vec3 position(in->mPosition.x, in->mPosition.y, in->mPosition.z);
+        const glm::vec3 direction(in->mDirection.x, in->mDirection.y, in->mDirection.z);
+        light.position = glm::vec3(transform * glm::vec4(position, 1.0f));
+        // a point light shines every way (Assimp gives it no direction)
+        light.direction =
+            glm::mat3(transform) *
+            (light.type == PunctualLight::Type::Point ? glm::vec3(0.0f, 0.0f, -1.0f) : direction);
+        const float length = glm::length(light.direction);
+        if (!std::isfinite(length) || length < 1e-12f ||
+            !std::isfinite(glm::dot(light.position, light.position)) ||
+            !std::isfinite(glm::dot(light.color, light.color))) {
+            throw Error(where + "light '" + light.name + "' has a broken transform or colour");
+        }
+        light.direction /= length;
+        if (light.type == PunctualLight::Type::Spot) {
+            light.innerConeAngle = in->mAngleInnerCone;
+            light.outerConeAngle = in->mAngleOuterCone;
+        }
+        lights.push_back(light);
+    }
+    return lights;
+}
+
+// KHR_texture_transform's texCoord, which Assimp 5.2 drops: it overrides the textureInfo's
+// texture coordinate set. Assimp's materials are matched with the file's by the order it reads
+// them in (assimpMaterialOrder), checked against their names; where they do not match, the
+// overrides are left out, saying so.
+// Whether a JSON value holds a KHR_texture_transform that sets texCoord.
+bool setsTexCoord(const JsonValue& value) {
+    for (const auto& [name, member] : value.members) {
+        if ((name == "KHR_texture_transform" && member.find("texCoord")) || setsTexCoord(member))
+            return true;
+    }
+    for (const JsonValue& item : value.items) {
+        if (setsTexCoord(item)) return true;
+    }
+    return false;
+}
+
+void applyTexCoordOverrides(const JsonValue& document, std::vector<Material>& materials,
+                            std::vector<std::string>& notes) {
+    const JsonValue* list = document.find("materials");
+    if (!list || materials.empty() || !setsTexCoord(*list)) return;
+    const std::vector<int> order = assimpMaterialOrder(document);
+    auto nameOf = [&](int index) {
+        const JsonValue* name = list->items[size_t(index)].find("name");
+        return name && name->type == JsonValue::Type::String ? name->text : std::string();
+    };
+    const size_t imported = materials.size() - (materials.back().gltfDefault ? 1 : 0);
+    bool matched = order.size() == imported;
+    for (size_t i = 0; matched && i < order.size(); ++i)
+        matched = nameOf(order[i]) == materials[i].name;
+    if (!matched) {
+        notes.push_back(
+            "the file's materials could not be matched with Assimp's; KHR_texture_transform's "
+            "texCoord is ignored");
+        return;
+    }
+    for (size_t i = 0; i < order.size(); ++i) {
+        const JsonValue& in = list->items[size_t(order[i])];
+        Material& out = materials[i];
+        auto apply = [](const JsonValue* textureInfo, TextureRef& ref) {
+            if (!textureInfo || !ref.present()) return;
+            if (const auto set = texCoordOverride(*textureInfo)) ref.uvSet = *set;
+        };
+        const JsonValue* pbr = in.find("pbrMetallicRoughness");
+        const JsonValue* extensions = in.find("extensions");
+        const JsonValue* specGloss =
+            extensions ? extensions->find("KHR_materials_pbrSpecularGlossiness") : nullptr;
+        if (out.specularGlossiness) {
+            apply(specGloss ? specGloss->find("diffuseTexture") : nullptr, out.baseColorTexture);
+            apply(specGloss ? specGloss->find("specularGlossinessTexture") : nullptr,
+                  out.specularGlossinessTexture);
+        } else {
+            apply(pbr ? pbr->find("baseColorTexture") : nullptr, out.baseColorTexture);
+            apply(pbr ? pbr->find("metallicRoughnessTexture") : nullptr,
+                  out.metallicRoughnessTexture);
+        }
+        apply(in.find("normalTexture"), out.normalTexture);
+        apply(in.find("occlusionTexture"), out.occlusionTexture);
+        apply(in.find("emissiveTexture"), out.emissiveTexture);
+    }
+}
+
+}  // namespace
+
+Model loadModel(const fs::path& file) {
+    std::error_code ec;
+    if (!fs::exists(file, ec)) throw Error(displayPath(file) + ": no such file");
+    if (!fs::is_regular_file(file, ec)) throw Error(displayPath(file) + ": not a file");
+    if (fs::file_size(file, ec) == 0) throw Error(displayPath(file) + ": empty file");
+    const std::string where = displayPath(file) + ": ";
+    bool isGltf = false;
+    std::vector<std::string> extensionsUsed, extensionsRequired;
+    std::optional<JsonValue> document;  // a glTF file's JSON, for what Assimp does not read
+    {
+        // Assimp's answer to a broken glTF container is "no suitable reader": say what is wrong.
+        std::string extension = file.extension().string();
+        for (char& c : extension) c = char(std::tolower(static_cast<unsigned char>(c)));
+        const std::string bytes = readTextFile(file);
+        const size_t first = bytes.find_first_not_of(" \t\r\n");
+        const bool json = first != std::string::npos && bytes[first] == '{';
+        if (bytes.starts_with("glTF") || json || extension == ".gltf") {
+            if (const auto problem = gltfContainerError(bytes)) throw Error(where + *problem);
+        } else if (extension == ".glb") {
+            throw Error(where + "not a binary glTF file (it does not start with 'glTF')");
+        }
+        isGltf = bytes.starts_with("glTF") || json;
+        if (isGltf) {
+            GltfExtensions extensions = gltfExtensions(bytes);
+            extensionsUsed = std::move(extensions.used);
+            extensionsRequired = std::move(extensions.required);
+            document = gltfJson(bytes);
+        }
+    }
+
+    Assimp::Importer importer;
+    const aiScene* scene =
+        importer.ReadFile(utf8Path(file), aiProcess_Triangulate | aiProcess_SortByPType |
+                                              aiProcess_ValidateDataStructure);
+    if (scene) {
+        // glTF 3.7.2.1: a primitive without NORMAL gets flat normals. Assimp's flat normals
+        // are one per vertex, so the triangles of such a mesh stop sharing vertices first.
+        for (unsigned i = 0; i < scene->mNumMeshes; ++i) {
+            if (!scene->mMeshes[i]->mNormals) unweld(scene->mMeshes[i]);
+        }
+        scene = importer.ApplyPostProcessing(aiProcess_GenNormals | aiProcess_CalcTangentSpace);
+    }
+    if (!scene) {
+        std::string reason = importer.GetErrorString();
+        while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' '))
+            reason.pop_back();
+        throw Error(where + "cannot load (" + (reason.empty() ? "unknown reason" : reason) + ")");
+    }
+    if (!scene->mRootNode || scene->mNumMeshes == 0) {
+        throw Error(
+            where + "no meshes to draw" +
+            std::string(scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE ? " (incomplete scene)" : ""));
+    }
+
+    Model model;
+    model.file = fs::absolute(file);
+    model.extensionsUsed = std::move(extensionsUsed);
+    model.extensionsRequired = std::move(extensionsRequired);
+    model.lights = readLights(scene, where);
+    Reader reader{scene, model, where};
+    for (unsigned i = 0; i < scene->mNumTextures; ++i) {
+        const aiTexture* t = scene->mTextures[i];
+        EmbeddedImage image;
+        image.name = t->mFilename.length ? t->mFilename.C_Str() : "*" + std::to_string(i);
+        if (t->mHeight == 0) {  // compressed: mWidth bytes of a PNG/JPEG file
+            const auto* bytes = reinterpret_cast<const std::uint8_t*>(t->pcData);
+            image.bytes.assign(bytes, bytes + t->mWidth);
+        } else {  // raw ARGB8888 texels
+            image.width = int(t->mWidth);
+            image.height = int(t->mHeight);
+            for (unsigned p = 0; p < t->mWidth * t->mHeight; ++p) {
+                image.bytes.insert(image.bytes.end(), {t->pcData[p].r, t->pcData[p].g,
+                                                       t->pcData[p].b, t->pcData[p].a});
+            }
+        }
+        model.embeddedImages.push_back(std::move(image));
+    }
+    for (unsigned i = 0; i < scene->mNumMaterials; ++i)
+        model.materials.push_back(reader.material(scene->mMaterials[i]));
+    // Assimp appends a nameless material of its own to every glTF scene for the primitives that
+    // name none: glTF's default material (all factors at their defaults, so white).
+    if (isGltf && !model.materials.empty() && model.materials.back().name.empty()) {
+        model.materials.back().gltfDefault = true;
+    }
+    if (document) applyTexCoordOverrides(*document, model.materials, model.notes);
+    std::set<const aiNode*> seen;
+    reader.visit(scene->mRootNode, glm::mat4(1.0f), 0, seen);
+    if (model.primitives.empty()) throw Error(where + "no triangles to draw");
+    for (const ModelPrimitive& primitive : model.primitives) {
+        if (model.materials[size_t(primitive.material)].gltfDefault)
+            ++model.primitivesWithoutMaterial;
+    }
+
+    model.boundsMin = glm::vec3(INFINITY);
+    model.boundsMax = glm::vec3(-INFINITY);
+    for (const ModelPrimitive& primitive : model.primitives) {
+        for (const glm::vec3& p : primitive.mesh.positions) {
+            const glm::vec3 world = glm::vec3(primitive.transform * glm::vec4(p, 1.0f));
+            model.boundsMin = glm::min(model.boundsMin, world);
+            model.boundsMax = glm::max(model.boundsMax, world);
+        }
+    }
+    if (!std::isfinite(glm::dot(model.boundsMin, model.boundsMax)))
+        throw Error(where + "non-finite node transforms");
+    return model;
+}
+
+}  // namespace pbr
