@@ -149,6 +149,10 @@ std::vector<GoldenCase> webGoldenCases() {
         {"05_ibl_specular_textured", "05_ibl_specular", {"--textured"}},
         {"06_brdf_lut", "06_brdf_lut", {}, 0.3},
         {"09_light_types", "09_light_types", {}, 0.1},
+        // the glTF samples, from the compact form of the model the native loader made
+        {"03_gltf_unlit", "03_gltf_unlit", {}, 0.05},
+        {"07_gltf_metallic_roughness", "07_gltf_metallic_roughness"},
+        {"08_gltf_specular_glossiness", "08_gltf_specular_glossiness"},
     };
 }
 
