@@ -1,8 +1,9 @@
 // Opens a web sample's page as a user does (a fresh headless Chromium on its software WebGL 2,
 // SwiftShader, the page's own default view in its canvas) and prints, as one JSON line, how long
-// after the page was opened its first frame was drawn: the page's own mark
+// after the page was opened its first frame was drawn: the page's own marks
 // (#pbr-status[data-first-frame-ms], web/shell.html: performance.now() once the first frame's GL
-// work has finished), real time, no virtual time budget. Run by scripts/bench.py --web.
+// work has finished; data-first-frame-submitted-ms once its commands were all given), real time,
+// no virtual time budget. Run by scripts/bench.py --web.
 //
 //     node scripts/first_frame.js CHROMIUM URL [TIMEOUT_S]
 //
@@ -31,7 +32,9 @@ const mark = `(function () {
   var exit = document.getElementById("pbr-exit");
   if (exit) return JSON.stringify({ failed: status ? status.textContent : "exit" });
   var ms = status && status.getAttribute("data-first-frame-ms");
-  return ms ? JSON.stringify({ first_frame_ms: Number(ms) }) : null;
+  return ms ? JSON.stringify({ first_frame_ms: Number(ms), submitted_ms:
+                               Number(status.getAttribute("data-first-frame-submitted-ms")) })
+            : null;
 })()`;
 (async () => {
   setTimeout(() => finish(1, `first_frame.js: no first frame after ${timeoutText || 60} s`),

@@ -32,6 +32,9 @@ EM_ASYNC_JS(void, pbr_wait_for_paint, (), {
 EM_JS(void, pbr_status, (const char* text), {
     if (Module["pbrStatus"]) Module["pbrStatus"](UTF8ToString(text));
 });
+EM_JS(void, pbr_first_frame_submitted, (), {
+    if (Module["pbrFirstFrameSubmitted"]) Module["pbrFirstFrameSubmitted"]();
+});
 EM_JS(void, pbr_first_frame_drawn, (), {
     if (Module["pbrFirstFrame"]) Module["pbrFirstFrame"]();
 });
@@ -115,7 +118,8 @@ void status(const std::string& text) {
 
 void waitForNextFrame() {
     if (!shownFirstFrame) {
-        glFinish();  // drawn, not only queued
+        pbr_first_frame_submitted();
+        finishGl();  // drawn, not only queued (glFinish alone does not wait in WebGL)
         pbr_first_frame_drawn();
         shownFirstFrame = true;
     }

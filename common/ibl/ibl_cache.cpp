@@ -29,18 +29,30 @@ constexpr float kMaxRadiance = 1.0e20f;
 
 // The environment as the maps need it: values past kMaxRadiance lowered to it, and a line on
 // stderr for that, and for a range past half floats (the maps then go to 32-bit floats).
-HdrImage readEnvironment(const fs::path& path) {
-    HdrImage image = readHdr(path);
-    int clamped = 0;  // texels
-    for (size_t i = 0; i < image.pixels.size(); i += 3) {
+// Values past kMaxRadiance in `count` texels lowered to it; returns how many texels had one.
+// Called once a row: a browser swaps in its optimised code for a WebAssembly function at a later
+// call only (see decodeHdrRow in image.cpp).
+[[gnu::noinline]] int clampRadiance(float* rgb, size_t count) {
+    int clamped = 0;
+    for (size_t i = 0; i < count * 3; i += 3) {
         bool any = false;
         for (size_t c = i; c < i + 3; ++c) {
-            if (image.pixels[c] > kMaxRadiance) {
-                image.pixels[c] = kMaxRadiance;
+            if (rgb[c] > kMaxRadiance) {
+                rgb[c] = kMaxRadiance;
                 any = true;
             }
         }
         clamped += any ? 1 : 0;
+    }
+    return clamped;
+}
+
+HdrImage readEnvironment(const fs::path& path) {
+    HdrImage image = readHdr(path);
+    int clamped = 0;  // texels
+    for (int y = 0; y < image.height; ++y) {
+        clamped += clampRadiance(&image.pixels[size_t(y) * size_t(image.width) * 3],
+                                 size_t(image.width));
     }
     if (clamped > 0) {
         std::fprintf(stderr,
