@@ -262,8 +262,11 @@ pre {{ background: #eee; padding: .3em .6em; margin: 0 0 .5em; overflow-x: auto;
 pre code {{ padding: 0; }}
 </style></head><body>
 <h1>PBR samples in the browser (WebGL 2)</h1>
-<p>The same C++ and GLSL as the native samples, built with emscripten; each page is one
-self-contained file and computes its IBL maps itself. A page takes the sample's flags in its
+<p>The same C++ and GLSL as the native samples, built with emscripten; each page opens from
+the disk as well as from a server. The glTF samples draw the models the native loader read,
+packed by the build, and the IBL maps of the project's environment come baked by the build; the
+material sets are one file beside the pages (<code>assets/materials.js</code>), loaded by the
+pages that show them. A page takes the sample's flags in its
 address: <code>05_ibl_specular.html?--textured&amp;--camera=0,0,8</code>
 (<code>?--help</code> lists them). Click a picture to look around: WASD moves, the mouse looks,
 scroll zooms, Esc ends the run.</p>

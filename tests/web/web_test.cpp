@@ -276,27 +276,45 @@ TEST(Web, KeysAndMouseMoveTheCamera) {
 // the window's panel does: the last frame after a change equals a page opened with the flag, and
 // the address follows the change (a link to the view). A control of a start-up flag does not
 // exist as a live one.
-TEST(Web, ControlsChangeThePageLive) {
-    PBR_NEED_WEB("01_lighting");
+struct LiveControl {
+    std::string sample, flag, value;
+};
+class WebControls : public ::testing::TestWithParam<LiveControl> {};
+
+TEST_P(WebControls, ChangeThePageLive) {
+    const LiveControl& control = GetParam();
+    PBR_NEED_WEB(control.sample);
     const std::vector<std::string> args = {"--frames", "3", "--size", "320x180", "--output",
                                            "last.png"};
-    const fs::path changedDir = testOutputDir("web_controls_changed");
-    const PageRun changed = runPage("01_lighting", args, changedDir, "set=--lights:2");
+    const std::string name = control.sample.substr(0, 2);
+    const PageRun changed = runPage(control.sample, args, testOutputDir("web_controls_changed_" + name),
+                                    "set=" + control.flag + ":" + control.value);
     ASSERT_EQ(changed.exitCode, std::optional<int>(0)) << changed.log;
     std::vector<std::string> withFlag = args;
-    withFlag.insert(withFlag.end(), {"--lights", "2"});
-    const PageRun started = runPage("01_lighting", withFlag, testOutputDir("web_controls_started"));
+    withFlag.insert(withFlag.end(), {control.flag, control.value});
+    const PageRun started =
+        runPage(control.sample, withFlag, testOutputDir("web_controls_started_" + name));
     ASSERT_EQ(started.exitCode, std::optional<int>(0)) << started.log;
-    const PageRun untouched = runPage("01_lighting", args, testOutputDir("web_controls_untouched"));
+    const PageRun untouched =
+        runPage(control.sample, args, testOutputDir("web_controls_untouched_" + name));
     ASSERT_TRUE(changed.files.count("last.png") && started.files.count("last.png") &&
                 untouched.files.count("last.png"));
     EXPECT_TRUE(changed.files.at("last.png") == started.files.at("last.png"))
-        << "the page after the control's change differs from the page opened with --lights 2";
+        << "the page after the control's change differs from the page opened with "
+        << control.flag << " " << control.value;
     EXPECT_FALSE(changed.files.at("last.png") == untouched.files.at("last.png"))
         << "the control's change did not show";
     std::printf("the address after the change: %s\n", changed.address.c_str());
-    EXPECT_NE(changed.address.find("--lights=2"), std::string::npos) << changed.address;
+    EXPECT_NE(changed.address.find(control.flag + "=" + control.value), std::string::npos)
+        << changed.address;
 }
+
+// 01's light count, and 07's tone mapper (the glTF page: its orbit camera's program)
+INSTANTIATE_TEST_SUITE_P(Pages, WebControls,
+                         ::testing::Values(LiveControl{"01_lighting", "--lights", "2"},
+                                           LiveControl{"07_gltf_metallic_roughness", "--tonemap",
+                                                       "aces"}),
+                         [](const auto& info) { return info.param.sample; });
 
 // The gallery links every web sample's page, each page is there, and each entry says what it
 // teaches (its README's summary: the first paragraph, with the formula or list it introduces).
