@@ -3,8 +3,9 @@
 // so that IblCache finds them in iblDir():
 // - brdf_lut_512.ktx (05, 07, 08: LearnOpenGL's 512^2 RG16F) and brdf_lut_sheen_256.ktx (06: the
 //   cookbook's 256^2 with sheen), read by every build;
-// - the project's environment's irradiance (32^2) and prefiltered (128^2, 5 levels) maps, which
-//   only the pages read (a page has no cache; natively the cache keeps what a first run made).
+// - the project's environment's cube (512^2, every mip), irradiance (32^2) and prefiltered
+//   (128^2, 5 levels) maps, which only the pages read (a page has no cache; natively the cache
+//   keeps what a first run made).
 // Computed by the same GPU code as at run time (pbr::computeBrdfLut, IblEnvironment), in a
 // headless context.
 #include <filesystem>
@@ -42,6 +43,7 @@ int main(int argc, char** argv) try {
     }
     pbr::IblCache none(std::nullopt);
     pbr::IblEnvironment environment(none, pbr::environmentDir() / "sunny_courtyard.hdr");
+    write(dir, environment.environmentFile(), environment.environmentMap().toKtx());
     write(dir, environment.irradianceFile(32), environment.irradianceMap(32).toKtx());
     write(dir, environment.prefilteredFile(128, 5, pbr::kPrefilterSamples),
           environment.prefilteredMap(128, 5, pbr::kPrefilterSamples).toKtx());

@@ -165,21 +165,33 @@ INSTANTIATE_TEST_SUITE_P(Pages, WebTermView,
                                            "07_view_roughness", "07_tonemap_aces"),
                          [](const auto& info) { return info.param; });
 
-// A page draws the same bytes every time, the IBL maps it computes included (04: the environment
-// cube, its mip chain and the irradiance convolution).
+// A page draws the same bytes every time, the IBL maps it computes included: 06 given the
+// environment (--hdr) computes its cube, mip chain, irradiance and prefiltered maps in the page
+// (none of them baked there), and writes them, with its picture, as files.
 TEST(Web, TwoRunsGiveTheSameBytes) {
-    PBR_NEED_WEB("04_ibl_irradiance");
-    for (const std::string sample : {"04_ibl_irradiance"}) {
-        std::string first;
-        for (const char* run : {"first", "second"}) {
-            const fs::path dir = testOutputDir("web_repeat_" + sample + "_" + run);
-            const WebRender render = renderPage(sample, {"--size", "640x360"}, dir);
-            const std::string bytes = render.page.files.at(sample + ".png");
-            ASSERT_FALSE(bytes.empty());
-            if (first.empty())
-                first = bytes;
-            else
-                EXPECT_TRUE(bytes == first) << sample << ": two runs of the page differ";
+    const std::string sample = "06_brdf_lut";
+    PBR_NEED_WEB(sample);
+    std::map<std::string, std::string> first;
+    for (const char* run : {"first", "second"}) {
+        const fs::path dir = testOutputDir(std::string("web_repeat_") + run);
+        // --benchmark, for its precompute figure: the maps were computed, not found
+        const PageRun page = runPage(sample,
+                                     {"--headless", "--size", "320x180", "--hdr",
+                                      "/resources/environments/sunny_courtyard.hdr",
+                                      "--benchmark", "--frames", "1"},
+                                     dir);
+        ASSERT_EQ(page.exitCode, std::optional<int>(0)) << page.log;
+        std::smatch precompute;
+        ASSERT_TRUE(std::regex_search(page.log, precompute,
+                                      std::regex("\"precompute_s\":([0-9.]+)")))
+            << page.log;
+        EXPECT_GT(std::stod(precompute[1]), 0.0) << "the page computed no map: " << page.log;
+        EXPECT_EQ(page.files.count("sunny_courtyard.prefiltered.ktx"), 1u) << page.log;
+        EXPECT_EQ(page.files.count("sunny_courtyard.irradiance.ktx"), 1u) << page.log;
+        if (first.empty()) {
+            first = page.files;
+        } else {
+            EXPECT_TRUE(page.files == first) << sample << ": two runs of the page differ";
         }
     }
 }
