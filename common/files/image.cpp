@@ -50,6 +50,30 @@ std::string decodeFailure(const std::vector<std::uint8_t>& bytes) {
     return "damaged or unsupported image data";
 }
 
+// A PNG's rows (a filter byte each, then the pixels at the header's bit depth) come out of
+// deflate, which expands its input at most 1032 times (a 258-byte match in two one-bit codes):
+// a header claiming more rows than the whole file could hold is damaged, and is refused before
+// stb allocates for it (a flipped width byte asked for up to 2 GB).
+void refuseImpossiblePng(const std::vector<std::uint8_t>& bytes, const std::string& what) {
+    if (bytes.size() < 33 || !startsWith(bytes, {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}) ||
+        !std::equal(bytes.begin() + 12, bytes.begin() + 16, "IHDR")) {
+        return;  // stb says what is wrong with it
+    }
+    auto get32 = [&](size_t at) {
+        return double((std::uint32_t(bytes[at]) << 24) | (std::uint32_t(bytes[at + 1]) << 16) |
+                      (std::uint32_t(bytes[at + 2]) << 8) | std::uint32_t(bytes[at + 3]));
+    };
+    const double width = get32(16), height = get32(20), depth = bytes[24];
+    const int colorType = bytes[25];
+    const double samples = colorType == 2 ? 3 : colorType == 4 ? 2 : colorType == 6 ? 4 : 1;
+    const double rowBytes = 1 + std::ceil(width * depth * samples / 8);
+    if (height * rowBytes > 1032.0 * double(bytes.size())) {
+        throw Error(what + ": damaged PNG header (it claims " + std::to_string(std::uint64_t(width)) +
+                    " x " + std::to_string(std::uint64_t(height)) + " pixels, more than " +
+                    std::to_string(bytes.size()) + " bytes of PNG can hold)");
+    }
+}
+
 }  // namespace
 
 Image readImage(const fs::path& path, int wantChannels) {
@@ -75,6 +99,7 @@ Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& wha
         throw Error(what + ": image too large (" + std::to_string(width) + " x " +
                     std::to_string(height) + " pixels)");
     }
+    refuseImpossiblePng(bytes, what);
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
         stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels,
                               wantChannels),

@@ -125,6 +125,38 @@ TEST(Image, BadFilesNameThePathAndTheReason) {
     EXPECT_NE(jpeg.find("cut.jpg: truncated or damaged JPEG data"), std::string::npos) << jpeg;
 }
 
+// A flipped width or height byte makes a small PNG claim a huge image. Deflate expands at most
+// 1032 times, so rows that the whole file could not hold are refused from the header, before stb
+// allocates for them (before this, up to 2 GB for a 1 KB file); the header's own size decodes.
+TEST(Image, APngClaimingMoreRowsThanItsBytesCanHoldIsRefusedFromItsHeader) {
+    const std::string png = encodePng(solid(64, 48, 10, 20, 30));
+    const std::vector<std::uint8_t> whole(png.begin(), png.end());
+    EXPECT_EQ(decodeImage(whole, "whole.png").width, 64);
+    auto claiming = [&](std::uint32_t width, std::uint32_t height) {
+        std::vector<std::uint8_t> bytes = whole;
+        for (int i = 0; i < 4; ++i) {
+            bytes[size_t(16 + i)] = std::uint8_t(width >> (24 - 8 * i));
+            bytes[size_t(20 + i)] = std::uint8_t(height >> (24 - 8 * i));
+        }
+        try {
+            decodeImage(bytes, "claims.png");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("decoded");
+    };
+    // 2e8 pixels: under the 2^28-pixel limit, 600 MB of rows from a file of a few hundred bytes
+    const std::string huge = claiming(20000, 10000);
+    EXPECT_EQ(huge.find("claims.png: damaged PNG header (it claims 20000 x 10000 pixels, more than " +
+                        std::to_string(png.size()) + " bytes of PNG can hold)"),
+              0u)
+        << huge;
+    // what the file could hold (64 x 96 RGB rows are 18 KB, under 1032 times its size) is not
+    // refused from the header: stb finds the data short
+    const std::string twice = claiming(64, 96);
+    EXPECT_EQ(twice, "claims.png: truncated or damaged PNG data");
+}
+
 }  // namespace
 }  // namespace pbr
 
