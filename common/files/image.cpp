@@ -27,6 +27,9 @@ namespace {
 bool startsWith(const std::vector<std::uint8_t>& bytes, std::initializer_list<std::uint8_t> magic) {
     return bytes.size() >= magic.size() && std::equal(magic.begin(), magic.end(), bytes.begin());
 }
+bool isPng(const std::vector<std::uint8_t>& bytes) {
+    return startsWith(bytes, {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'});
+}
 
 // stb_image's failure codes ("outofdata", "bad zlib header", ...) in words a user understands.
 std::string decodeFailure(const std::vector<std::uint8_t>& bytes) {
@@ -35,7 +38,7 @@ std::string decodeFailure(const std::vector<std::uint8_t>& bytes) {
     if (code == "too large") return "image too large to decode";
     if (code == "0-pixel image" || code == "0 width" || code == "invalid width")
         return "the image has no pixels";
-    const bool png = startsWith(bytes, {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'});
+    const bool png = isPng(bytes);
     const bool jpeg = startsWith(bytes, {0xff, 0xd8, 0xff});
     if (png) {
         if (code == "1/2/4/8/16-bit only") return "unsupported PNG bit depth";
@@ -55,7 +58,7 @@ std::string decodeFailure(const std::vector<std::uint8_t>& bytes) {
 // a header claiming more rows than the whole file could hold is damaged, and is refused before
 // stb allocates for it (a flipped width byte asked for up to 2 GB).
 void refuseImpossiblePng(const std::vector<std::uint8_t>& bytes, const std::string& what) {
-    if (bytes.size() < 33 || !startsWith(bytes, {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}) ||
+    if (bytes.size() < 33 || !isPng(bytes) ||
         !std::equal(bytes.begin() + 12, bytes.begin() + 16, "IHDR")) {
         return;  // stb says what is wrong with it
     }
@@ -68,8 +71,9 @@ void refuseImpossiblePng(const std::vector<std::uint8_t>& bytes, const std::stri
     const double samples = colorType == 2 ? 3 : colorType == 4 ? 2 : colorType == 6 ? 4 : 1;
     const double rowBytes = 1 + std::ceil(width * depth * samples / 8);
     if (height * rowBytes > 1032.0 * double(bytes.size())) {
-        throw Error(what + ": damaged PNG header (it claims " + std::to_string(std::uint64_t(width)) +
-                    " x " + std::to_string(std::uint64_t(height)) + " pixels, more than " +
+        const std::string claimed = std::to_string(std::uint64_t(width)) + " x " +
+                                    std::to_string(std::uint64_t(height));
+        throw Error(what + ": damaged PNG header (it claims " + claimed + " pixels, more than " +
                     std::to_string(bytes.size()) + " bytes of PNG can hold)");
     }
 }
