@@ -6,12 +6,15 @@ material set of five decodes one), files with the same bytes are carried once, a
 data is deflated again at zlib's best (the same pixels in a third less: png_redeflated), and
 other large files travel deflated, inflated by the browser before main() (the baked IBL maps).
 
-    web/embed.py --page build/web/05_ibl_specular.html [--bundle assets/materials.js[@FLAG]]
-                 SOURCE@/DESTINATION ...
+    web/embed.py --page build/web/05_ibl_specular.html --shell web/shell.html
+                 --program 05_ibl_specular --script assets/samples.js
+                 [--bundle assets/materials.js[@FLAG]] SOURCE@/DESTINATION ...
     web/embed.py --write-bundle build/web/assets/materials.js SOURCE@/DESTINATION ...
 
---page writes, where the shell (web/shell.html) has its <!-- pbr:files --> marker, a script with
-the files and the loader. --bundle names a bundle (a path relative to the page) the page loads
+--page writes a sample's page: the shell (web/shell.html) with, where it has its
+<!-- pbr:files --> marker, a script with the files, the loader and the sample's name (argv[0],
+which web/samples_main.cpp runs), and, at {{{ SCRIPT }}}, the program every page shares
+(--script, the wasm inside, loaded with <script src>). --bundle names a bundle (a path relative to the page) the page loads
 before main(), always, or only when its command line holds FLAG (05 reads the material sets
 only with --textured). --write-bundle writes such a bundle: a script of its own, loaded with
 <script src>, so that the pages open from file:// too and the gallery carries the material
@@ -25,6 +28,7 @@ written whole, or removed when its files cannot be put in. Standard library only
 """
 import argparse
 import base64
+import html
 import json
 import pathlib
 import struct
@@ -137,14 +141,15 @@ def data_and_files(entries):
     return lines
 
 
-def page_script(entries, bundles):
+def page_script(program, entries, bundles):
     needs = [list(b.partition("@")[::2]) for b in bundles]  # [src, flag or ""]
     return "\n".join([
         "<script>",
-        "// web/embed.py: this page's files, made files of its file system before main(), each",
-        "// decoded at its first read, and the bundles it loads; the script then leaves the page",
-        "// (its megabytes of text are not the page's content)",
+        "// web/embed.py: the sample this page runs (argv[0]), its files, made files of its file",
+        "// system before main(), each decoded at its first read, and the bundles it loads; the",
+        "// script then leaves the page (its megabytes of text are not the page's content)",
         "(function (script) {",
+        f'Module["thisProgram"] = {json.dumps(program)};',
         LOADER.strip(),
         *data_and_files(entries),
         f"var bundles = {json.dumps(needs)};",
@@ -173,6 +178,9 @@ def main():
     target = parser.add_mutually_exclusive_group(required=True)
     target.add_argument("--page")
     target.add_argument("--write-bundle")
+    parser.add_argument("--shell", help="the page's template (web/shell.html), with --page")
+    parser.add_argument("--program", help="the sample the page runs, with --page")
+    parser.add_argument("--script", help="the program's script, relative to the page, with --page")
     parser.add_argument("--bundle", action="append", default=[], help="SRC[@FLAG], with --page")
     parser.add_argument("entries", nargs="*", help="SOURCE@/DESTINATION")
     args = parser.parse_intermixed_args()
@@ -186,13 +194,18 @@ def main():
         out.parent.mkdir(parents=True, exist_ok=True)
         write_whole(out, text)
         return
+    if not (args.shell and args.program and args.script):
+        raise SystemExit("embed.py: --page needs --shell, --program and --script")
     out = pathlib.Path(args.page)
-    page = out.read_text(encoding="utf-8")
-    marker = "<!-- pbr:files -->"
-    if page.count(marker) != 1:
-        raise SystemExit(f"embed.py: {out}: no single {marker} marker (already packed, or not "
-                         "made from web/shell.html)")
-    page = page.replace(marker, page_script(args.entries, args.bundle))
+    page = pathlib.Path(args.shell).read_text(encoding="utf-8")
+    for marker in ("<!-- pbr:files -->", "{{{ SCRIPT }}}"):
+        if page.count(marker) != 1:
+            raise SystemExit(f"embed.py: {args.shell}: no single {marker} marker")
+    src = html.escape(args.script)
+    failed = html.escape(json.dumps(f"error: {args.script}: cannot be loaded (it belongs beside the page)"))
+    page = page.replace("<!-- pbr:files -->", page_script(args.program, args.entries, args.bundle))
+    page = page.replace("{{{ SCRIPT }}}",
+                        f'<script src="{src}" onerror="Module.pbrFailed({failed})"></script>')
     write_whole(out, page)
 
 

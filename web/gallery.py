@@ -266,7 +266,7 @@ pre code {{ padding: 0; }}
 the disk as well as from a server. The glTF samples draw the models the native loader read,
 packed by the build, and the IBL maps of the project's environment come baked by the build; the
 material sets are one file beside the pages (<code>assets/materials.js</code>), loaded by the
-pages that show them. A page takes the sample's flags in its
+pages that show them, and the pages of each layer of the helper library share one program. A page takes the sample's flags in its
 address: <code>05_ibl_specular.html?--textured&amp;--camera=0,0,8</code>
 (<code>?--help</code> lists them). Click a picture to look around: WASD moves, the mouse looks,
 scroll zooms, Esc ends the run.</p>

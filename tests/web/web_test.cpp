@@ -361,7 +361,9 @@ TEST(Web, EveryPageWeighsAtMost32MBAndCarriesNothingTwice) {
     };
     std::set<std::string> samples;
     for (const GoldenCase& golden : webGoldenCases()) samples.insert(golden.sample);
-    const std::regex bundle(R"re(\["(assets/[^"]+\.js)", "([^"]*)"\])re");
+    // the bundles a page loads (["assets/NAME.js", "FLAG"]) and the program it runs
+    // (<script src="assets/LAYER_samples.js">, shared by the pages of a layer of common/)
+    const std::regex bundle(R"re(\["(assets/[^"]+\.js)", "([^"]*)"\]|<script src="(assets/[^"]+\.js)")re");
     for (const std::string& sample : samples) {
         const std::string page = text(webPage(sample));
         std::vector<std::string> parts = {page};
@@ -369,10 +371,11 @@ TEST(Web, EveryPageWeighsAtMost32MBAndCarriesNothingTwice) {
         double bytes = double(page.size());
         for (auto it = std::sregex_iterator(page.begin(), page.end(), bundle);
              it != std::sregex_iterator(); ++it) {
-            parts.push_back(text(fs::path(PBR_WEB_DIR) / (*it)[1].str()));
-            ASSERT_FALSE(parts.back().empty()) << sample << ": " << (*it)[1].str();
+            const std::string file = (*it)[1].matched ? (*it)[1].str() : (*it)[3].str();
+            parts.push_back(text(fs::path(PBR_WEB_DIR) / file));
+            ASSERT_FALSE(parts.back().empty()) << sample << ": " << file;
             bytes += double(parts.back().size());
-            bundles += " + " + (*it)[1].str() + ((*it)[2].length() ? " (with " + (*it)[2].str() + ")" : "");
+            bundles += " + " + file + ((*it)[2].length() ? " (with " + (*it)[2].str() + ")" : "");
         }
         std::printf("%s: %.1f MB (the page%s)\n", sample.c_str(), bytes / 1e6, bundles.c_str());
         EXPECT_LE(bytes, 32e6) << sample;
