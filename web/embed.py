@@ -7,14 +7,15 @@ data is deflated again at zlib's best (the same pixels in a third less: png_rede
 other large files travel deflated, inflated by the browser before main() (the baked IBL maps).
 
     web/embed.py --page build/web/05_ibl_specular.html --shell web/shell.html
-                 --program 05_ibl_specular --script assets/samples.js
+                 --program 05_ibl_specular --script assets/ibl_samples.js
                  [--bundle assets/materials.js[@FLAG]] SOURCE@/DESTINATION ...
     web/embed.py --write-bundle build/web/assets/materials.js SOURCE@/DESTINATION ...
 
 --page writes a sample's page: the shell (web/shell.html) with, where it has its
 <!-- pbr:files --> marker, a script with the files, the loader and the sample's name (argv[0],
-which web/samples_main.cpp runs), and, at {{{ SCRIPT }}}, the program every page shares
-(--script, the wasm inside, loaded with <script src>). --bundle names a bundle (a path relative to the page) the page loads
+which web/samples_main.cpp runs), and, at {{{ SCRIPT }}}, the program the pages of its layer
+share (--script, the wasm inside, loaded with <script src>; one that cannot be loaded is the
+page's one error line). --bundle names a bundle (a path relative to the page) the page loads
 before main(), always, or only when its command line holds FLAG (05 reads the material sets
 only with --textured). --write-bundle writes such a bundle: a script of its own, loaded with
 <script src>, so that the pages open from file:// too and the gallery carries the material
@@ -202,10 +203,12 @@ def main():
         if page.count(marker) != 1:
             raise SystemExit(f"embed.py: {args.shell}: no single {marker} marker")
     src = html.escape(args.script)
-    failed = html.escape(json.dumps(f"error: {args.script}: cannot be loaded (it belongs beside the page)"))
-    page = page.replace("<!-- pbr:files -->", page_script(args.program, args.entries, args.bundle))
+    failed = html.escape(json.dumps(f"error: {args.script}: cannot be loaded (it belongs beside "
+                                    "the page)"))
+    # the script marker first: the files' names are the user's, the shell's markers are not
     page = page.replace("{{{ SCRIPT }}}",
                         f'<script src="{src}" onerror="Module.pbrFailed({failed})"></script>')
+    page = page.replace("<!-- pbr:files -->", page_script(args.program, args.entries, args.bundle))
     write_whole(out, page)
 
 

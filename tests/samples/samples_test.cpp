@@ -49,7 +49,7 @@ std::vector<SampleOnBackend> samplesOnBackends() {
         for (const std::string& backend : backends) {
 #ifdef PBR_SANITIZED
             const bool everySampleHere =
-                backend == "egl" || std::find(backends.begin(), backends.end(), "egl") == backends.end();
+                backend == "egl" || std::count(backends.begin(), backends.end(), "egl") == 0;
             if (sample != samples.front() && !everySampleHere) continue;
 #endif
             runs.emplace_back(sample, backend);
