@@ -128,6 +128,12 @@ std::string encodePng(const Image& image) {
             size_t(image.width) * size_t(image.height) * size_t(image.channels)) {
         throw Error("cannot encode an empty or malformed image as PNG");
     }
+    // One filter for every row (Sub, each byte less its left neighbour) and stb's shortest match
+    // search: a 1280x720 frame of 01, 05 or 07 encodes in 38-66 ms instead of 87-100 ms with
+    // stb's defaults (each row tried with all five filters, level 8), 1-9 % larger. Measured
+    // 2026-12-04 on the three frames; the pixels are the same, only the bytes differ.
+    stbi_write_force_png_filter = 1;
+    stbi_write_png_compression_level = 5;
     std::string bytes;
     if (!stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, image.channels,
                                 image.pixels.data(), image.width * image.channels)) {
