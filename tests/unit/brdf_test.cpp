@@ -43,6 +43,61 @@ TEST(Brdf, FresnelSchlickEndPoints) {
     EXPECT_NEAR(fresnelSchlick(0.5f, F0).x, 0.04f + 0.96f / 32.0f, 1e-6f);
 }
 
+// The ambient term's Fresnel (Sebastien Lagarde's roughness-aware Schlick, as LearnOpenGL's IBL
+// chapter uses it): F0 head-on; at grazing the rim reaches max(1 - roughness, F0), not 1.
+TEST(Brdf, FresnelSchlickRoughnessEndPoints) {
+    const glm::vec3 F0(0.04f, 0.5f, 0.9f);
+    const glm::vec3 rim(0.7f, 0.7f, 0.9f);  // max(1 - 0.3, F0) by hand
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_FLOAT_EQ(fresnelSchlickRoughness(1.0f, F0, 0.3f)[c], F0[c]);
+        EXPECT_FLOAT_EQ(fresnelSchlickRoughness(0.0f, F0, 0.3f)[c], rim[c]);
+        EXPECT_NEAR(fresnelSchlickRoughness(0.5f, F0, 0.3f)[c], F0[c] + (rim[c] - F0[c]) / 32.0f,
+                    1e-6f);
+    }
+}
+
+// Both forms of 05's ambient term in a uniform white environment (irradiance = prefiltered = 1)
+// with a LUT value (scale 0.8, bias 0.1). The exact form conserves energy: a white dielectric
+// gives back all of it, its diffuse taking what its lobe, 0.04 x 0.8 + 0.1 = 0.132, does not; a
+// white metal returns the LUT's own albedo, 0.9. LearnOpenGL's form agrees head-on (F = F0) and
+// at grazing weighs by F = max(1 - roughness, F0) = 0.7 at roughness 0.3: specular
+// 0.7 x 0.8 + 0.1 = 0.66, diffuse 1 - 0.7 = 0.3.
+TEST(SplitSumAmbient, WhiteFurnaceClosedForms) {
+    const glm::vec3 white(1.0f), sky(1.0f);
+    const glm::vec2 lut(0.8f, 0.1f);
+    const SplitSumAmbient dielectric =
+        splitSumAmbient(0.3f, white, 0.0f, 0.3f, sky, sky, lut, true);
+    EXPECT_NEAR(dielectric.specular.x, 0.132f, 1e-6f);
+    EXPECT_NEAR(dielectric.diffuse.x + dielectric.specular.x, 1.0f, 1e-6f);
+    const SplitSumAmbient metal = splitSumAmbient(0.3f, white, 1.0f, 0.3f, sky, sky, lut, true);
+    EXPECT_FLOAT_EQ(metal.diffuse.x, 0.0f);
+    EXPECT_NEAR(metal.specular.x, 0.9f, 1e-6f);
+    const SplitSumAmbient headOn = splitSumAmbient(1.0f, white, 0.0f, 0.3f, sky, sky, lut, false);
+    EXPECT_NEAR(headOn.specular.x, dielectric.specular.x, 1e-6f);
+    const SplitSumAmbient grazing = splitSumAmbient(0.0f, white, 0.0f, 0.3f, sky, sky, lut, false);
+    EXPECT_NEAR(grazing.specular.x, 0.66f, 1e-6f);
+    EXPECT_NEAR(grazing.diffuse.x, 0.3f, 1e-6f);
+}
+
+// The glTF samples' ambient term in the same white furnace (LUT scale 0.6, bias 0.05): a white
+// dielectric gives back all of the light with or without multiple scattering (its diffuse takes
+// what its lobe does not: 1 - (0.04 x 0.6 + 0.05) = 0.926 without); a white metal returns the
+// LUT's albedo, 0.65, in single scattering, and the whole environment, 1, with Fdez-Aguera's
+// multiple scattering (E + (1 - E) E / (1 - (1 - E)) = 1 for F = 1).
+TEST(GltfAmbient, WhiteFurnaceClosedForms) {
+    const glm::vec3 origin(0.0f), up(0, 0, 1), white(1.0f), sky(1.0f);
+    const glm::vec2 lut(0.6f, 0.05f);
+    const GltfSurface dielectric = metallicRoughnessSurface(origin, up, white, 0.0f, 0.5f);
+    const GltfSurface metal = metallicRoughnessSurface(origin, up, white, 1.0f, 0.5f);
+    for (bool multiple : {false, true}) {
+        const GltfAmbient a = gltfAmbient(dielectric, sky, sky, lut, multiple);
+        EXPECT_NEAR(a.diffuse.x + a.dielectricSpecular.x, 1.0f, 1e-5f) << multiple;
+    }
+    EXPECT_NEAR(gltfAmbient(dielectric, sky, sky, lut, false).diffuse.x, 0.926f, 1e-6f);
+    EXPECT_NEAR(gltfAmbient(metal, sky, sky, lut, false).metal.x, 0.65f, 1e-6f);
+    EXPECT_NEAR(gltfAmbient(metal, sky, sky, lut, true).metal.x, 1.0f, 1e-5f);
+}
+
 TEST(Brdf, SchlickGgxGeometryIsOneHeadOnAndFallsAtGrazing) {
     for (float roughness : {0.05f, 0.5f, 1.0f}) {
         EXPECT_FLOAT_EQ(GeometrySchlickGGX(1.0f, roughness), 1.0f);
