@@ -4,7 +4,8 @@
 #                            a display, otherwise an offscreen PNG whose path it prints)
 #   ./build.sh test          install what is missing, build, run every test through ctest: in the
 #                            Release build (the web samples in headless Chromium included), then
-#                            again in the AddressSanitizer + UBSan build
+#                            in the AddressSanitizer + UBSan build those that run every line of
+#                            ours (tests/sanitizers/release_only.txt names the others)
 # and one more:
 #   ./build.sh web           install what is missing, build the samples for the browser into
 #                            build/web (open build/web/index.html)
@@ -15,8 +16,8 @@ usage() {
 usage: ./build.sh run [sample flags]   install what is missing, build, run sample 01: a window
                                        when there is a display, else an offscreen PNG and its path
        ./build.sh test                 install what is missing, build, run every test (Release,
-                                       the web samples in headless Chromium, then
-                                       AddressSanitizer + UBSan)
+                                       the web samples in headless Chromium), then under
+                                       AddressSanitizer + UBSan those that run every line of ours
        ./build.sh web                  install what is missing (emscripten, Chromium), build the
                                        web samples into build/web: open build/web/index.html
        ./build.sh -h | --help          this help
@@ -251,7 +252,7 @@ case "${1:-}" in
             echo "build.sh: no web build here: the web tests will be skipped" >&2
         fi
         timed "Release tests" ctest --preset default -j "$(nproc)"
-        echo "build.sh: the same tests under AddressSanitizer + UndefinedBehaviorSanitizer" >&2
+        echo "build.sh: under AddressSanitizer + UndefinedBehaviorSanitizer, the tests that run every line of ours" >&2
         copy_to_long_checkout
         cd "$repo_dir/$LONG_CHECKOUT"
         timed "sanitizer build" build asan

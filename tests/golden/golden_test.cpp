@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
-#include <set>
 #include <tuple>
 
 #include "base/paths.h"
@@ -30,29 +29,6 @@ void expectCleanRun(const SampleRender& render) {
 // (the clear colour) by more than a few levels.
 void expectNotBlank(const Image& image, double minShare) {
     EXPECT_GT(double(pixelsUnlikeCorner(image)) / (double(image.width) * image.height), minShare);
-}
-
-// The cases drawn here. Under the sanitizers, a case whose flags differ from an earlier case's of
-// the same sample only in the value of --view, --tonemap or --only is left to the Release build:
-// those values choose shader inputs (a uniform, a define), not C++, so the first of each such
-// family runs every line of ours the rest would (01_view_d stands for 01's other views).
-std::vector<GoldenCase> drawnGoldenCases() {
-    std::vector<GoldenCase> cases = goldenCases();
-#ifdef PBR_SANITIZED
-    std::set<std::string> families;
-    std::erase_if(cases, [&](const GoldenCase& golden) {
-        std::string family = golden.sample;
-        for (size_t i = 0; i < golden.args.size(); ++i) {
-            const std::string& arg = golden.args[i];
-            const bool shaderInput =
-                i > 0 && (golden.args[i - 1] == "--view" || golden.args[i - 1] == "--tonemap" ||
-                          golden.args[i - 1] == "--only");
-            family += " " + (shaderInput ? std::string("*") : arg);
-        }
-        return !families.insert(family).second;
-    });
-#endif
-    return cases;
 }
 
 class GoldenImage : public ::testing::TestWithParam<std::tuple<GoldenCase, std::string>> {};
@@ -93,22 +69,16 @@ TEST_P(GoldenImage, MatchesGolden) {
     }
 }
 
-// Where each golden is drawn. Every case on the first offscreen software backend this build
-// has; on the others, each sample's default picture (the case with no flags), which runs all of a
+// Where each golden is drawn: every case on the first offscreen software backend this build has;
+// on the others, each sample's default picture (the case with no flags), which runs all of a
 // backend's own code (its context, its read-back): the flags choose what is drawn, not where, and
-// on one machine the backends give the same bytes (Golden.BackendsGiveTheSamePixels). Under the
-// sanitizers, on the first alone (see tests/CMakeLists.txt).
+// on one machine the backends give the same bytes (Golden.BackendsGiveTheSamePixels).
 std::vector<std::tuple<GoldenCase, std::string>> goldenRuns() {
     const std::vector<std::string> backends = softwareBackends();
     std::vector<std::tuple<GoldenCase, std::string>> runs;
-    for (const GoldenCase& golden : drawnGoldenCases()) {
+    for (const GoldenCase& golden : goldenCases()) {
         for (size_t i = 0; i < backends.size(); ++i) {
-#ifdef PBR_SANITIZED
-            const bool everyBackend = false;
-#else
-            const bool everyBackend = golden.args.empty();
-#endif
-            if (i == 0 || everyBackend) runs.emplace_back(golden, backends[i]);
+            if (i == 0 || golden.args.empty()) runs.emplace_back(golden, backends[i]);
         }
     }
     return runs;

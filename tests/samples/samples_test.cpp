@@ -3,7 +3,6 @@
 // asks GL about every name at exit).
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <sstream>
 
 #include "context/context.h"
@@ -38,22 +37,11 @@ TEST_P(EverySample, RunsCleanHeadless) {
     EXPECT_TRUE(fs::exists(render.image));
 }
 
-// Every sample on every backend. Under the sanitizers a backend's own code is its context
-// layer, which any one sample runs as a second would: there each backend draws the first sample,
-// and every sample is drawn on EGL (its debug contexts run KHR_debug's callback), as the goldens
-// draw every sample on the first software backend (tests/golden/golden_test.cpp).
+// Every sample on every backend.
 std::vector<SampleOnBackend> samplesOnBackends() {
-    const std::vector<std::string> samples = sampleNames(), backends = offscreenBackends();
     std::vector<SampleOnBackend> runs;
-    for (const std::string& sample : samples) {
-        for (const std::string& backend : backends) {
-#ifdef PBR_SANITIZED
-            const bool everySampleHere =
-                backend == "egl" || std::count(backends.begin(), backends.end(), "egl") == 0;
-            if (sample != samples.front() && !everySampleHere) continue;
-#endif
-            runs.emplace_back(sample, backend);
-        }
+    for (const std::string& sample : sampleNames()) {
+        for (const std::string& backend : offscreenBackends()) runs.emplace_back(sample, backend);
     }
     return runs;
 }
