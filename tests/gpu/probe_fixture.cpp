@@ -24,7 +24,8 @@ int main(int argc, char** argv) try {
         std::fprintf(stderr, "usage: gpu_probe find|clear\n");
         return 2;
     }
-    const std::string renderer = pbr::test::probeEglRenderer(pbr::test::testOutputDir("gpu_probe"));
+    const std::string renderer =
+        pbr::test::probeEglRenderer(pbr::test::testOutputDir("gpu_probe"));
     fs::create_directories(file.parent_path());
     pbr::writeFileAtomically(file, renderer);
     std::printf("--backend egl: %s\n", renderer.empty() ? "no context" : renderer.c_str());

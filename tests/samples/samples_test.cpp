@@ -39,9 +39,10 @@ TEST_P(EverySample, RunsCleanHeadless) {
 
 // Every sample on every backend.
 std::vector<SampleOnBackend> samplesOnBackends() {
+    const std::vector<std::string> backends = offscreenBackends();
     std::vector<SampleOnBackend> runs;
     for (const std::string& sample : sampleNames()) {
-        for (const std::string& backend : offscreenBackends()) runs.emplace_back(sample, backend);
+        for (const std::string& backend : backends) runs.emplace_back(sample, backend);
     }
     return runs;
 }
