@@ -122,18 +122,21 @@ void appendBytes(void* context, void* data, int size) {
 }
 }  // namespace
 
-std::string encodePng(const Image& image) {
+std::string encodePng(const Image& image, PngEncoding encoding) {
     if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 ||
         image.pixels.size() !=
             size_t(image.width) * size_t(image.height) * size_t(image.channels)) {
         throw Error("cannot encode an empty or malformed image as PNG");
     }
-    // One filter for every row (Sub, each byte less its left neighbour) and stb's shortest match
-    // search: a 1280x720 frame of 01, 05 or 07 encodes in 38-66 ms instead of 87-100 ms with
-    // stb's defaults (each row tried with all five filters, level 8), 1-9 % larger. Measured
-    // 2026-12-04 on the three frames; the pixels are the same, only the bytes differ.
-    stbi_write_force_png_filter = 1;
-    stbi_write_png_compression_level = 5;
+    // Fast: one filter for every row (Sub, each byte less its left neighbour) and stb's shortest
+    // match search: a 1280x720 frame of 01, 05 or 07 encodes in 38-66 ms instead of 87-100 ms
+    // with stb's defaults, 1-9 % larger (measured 2026-12-04 on the three frames). Small: stb's
+    // defaults, for what is written once and carried often: the 25 maps of the material sets
+    // come to 18.5 MB instead of 22.1, and 12.8 MB instead of 16.2 once web/embed.py deflates
+    // their rows again (the same filters kept), so the pages that carry them weigh 4 MB less.
+    const bool fast = encoding == PngEncoding::Fast;
+    stbi_write_force_png_filter = fast ? 1 : -1;
+    stbi_write_png_compression_level = fast ? 5 : 8;
     std::string bytes;
     if (!stbi_write_png_to_func(appendBytes, &bytes, image.width, image.height, image.channels,
                                 image.pixels.data(), image.width * image.channels)) {
@@ -142,8 +145,8 @@ std::string encodePng(const Image& image) {
     return bytes;
 }
 
-void writePng(const fs::path& path, const Image& image) {
-    writeFileAtomically(path, [&] { return encodePng(image); });
+void writePng(const fs::path& path, const Image& image, PngEncoding encoding) {
+    writeFileAtomically(path, [&] { return encodePng(image, encoding); });
 }
 
 namespace {

@@ -28,10 +28,17 @@ Image readImage(const std::filesystem::path& path, int wantChannels = 0);
 // Decodes an image file's bytes held in memory; `what` names it in the error.
 Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& what,
                   int wantChannels = 0);
+// How hard the PNG encoder works; the pixels are the same either way, only the bytes differ.
+enum class PngEncoding {
+    Fast,   // the frames a run writes: one filter (Sub) for every row, stb's level 5
+    Small,  // the assets the build bakes once and the pages carry: stb's defaults (each row
+            // tried with all five filters, level 8)
+};
 // An 8-bit PNG file's bytes (the same bytes for the same pixels). Throws Error when malformed.
-std::string encodePng(const Image& image);
+std::string encodePng(const Image& image, PngEncoding encoding = PngEncoding::Fast);
 // Writes an 8-bit PNG, whole or not at all (see output.h). Throws Error("<path>: <reason>").
-void writePng(const std::filesystem::path& path, const Image& image);
+void writePng(const std::filesystem::path& path, const Image& image,
+              PngEncoding encoding = PngEncoding::Fast);
 // The image with its rows in the opposite order (GL reads bottom row first).
 Image flipRows(const Image& image);
 

@@ -110,7 +110,7 @@ int main(int argc, char** argv) try {
             png.pixels[i] =
                 std::uint8_t(std::lround(std::pow(c / (c + 1.0f), 1.0f / 2.2f) * 255.0f));
         }
-        pbr::writePng(preview, png);
+        pbr::writePng(preview, png, pbr::PngEncoding::Small);
     }
     return 0;
 } catch (...) {

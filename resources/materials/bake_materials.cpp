@@ -35,7 +35,9 @@ int main(int argc, char** argv) try {
         sets.push_back(pbr::materials::bake(name, size));
         pbr::materials::write(sets.back(), outDir);
     }
-    if (!sheetPath.empty()) pbr::writePng(sheetPath, pbr::materials::contactSheet(sets, 128));
+    if (!sheetPath.empty()) {
+        pbr::writePng(sheetPath, pbr::materials::contactSheet(sets, 128), pbr::PngEncoding::Small);
+    }
     return 0;
 } catch (...) {
     return pbr::reportFailure();

@@ -265,11 +265,11 @@ MaterialSet bake(const std::string& name, int size) {
 void write(const MaterialSet& set, const std::filesystem::path& dir) {
     const std::filesystem::path folder = dir / set.name;
     std::filesystem::create_directories(folder);  // the build's own folder
-    writePng(folder / "albedo.png", set.albedo);
-    writePng(folder / "normal.png", set.normal);
-    writePng(folder / "metallic.png", set.metallic);
-    writePng(folder / "roughness.png", set.roughness);
-    writePng(folder / "ao.png", set.ao);
+    writePng(folder / "albedo.png", set.albedo, PngEncoding::Small);
+    writePng(folder / "normal.png", set.normal, PngEncoding::Small);
+    writePng(folder / "metallic.png", set.metallic, PngEncoding::Small);
+    writePng(folder / "roughness.png", set.roughness, PngEncoding::Small);
+    writePng(folder / "ao.png", set.ao, PngEncoding::Small);
 }
 
 Image contactSheet(const std::vector<MaterialSet>& sets, int thumb) {

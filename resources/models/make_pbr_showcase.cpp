@@ -422,7 +422,7 @@ struct Asset {
 
     int texture(const std::string& name, const Image& image, Sampler sampler) {
         const std::string file = "pbr_showcase_" + name + ".png";
-        files.add(dir / file, pbr::encodePng(image));
+        files.add(dir / file, pbr::encodePng(image, pbr::PngEncoding::Small));
         images.push_back("{\"uri\":" + quoted(file) + "}");
         textures.push_back("{\"sampler\":" + std::to_string(int(sampler)) +
                            ",\"source\":" + std::to_string(images.size() - 1) + "}");

@@ -188,7 +188,7 @@ int main(int argc, char** argv) try {
     for (auto& member : buffer.members("unlit_showcase.bin")) members.push_back(member);
     pbr::writeFileAtomically(dir / "unlit_showcase.gltf", pbr::gltf::document(members));
     pbr::writeFileAtomically(dir / "unlit_showcase.bin", buffer.bytes());
-    pbr::writePng(dir / "unlit_showcase_texture.png", texture());
+    pbr::writePng(dir / "unlit_showcase_texture.png", texture(), pbr::PngEncoding::Small);
     return 0;
 } catch (...) {
     return pbr::reportFailure();
