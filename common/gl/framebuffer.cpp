@@ -106,12 +106,18 @@ Image RenderTarget::readPixels() const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-    Image image{width_, height_, 3, {}};
-    image.pixels.reserve(size_t(width_) * size_t(height_) * 3);
-    for (size_t i = 0; i < rgba.size(); i += 4) {
-        image.pixels.insert(image.pixels.end(), &rgba[i], &rgba[i] + 3);
+    // RGB, each row moved to its place: GL's rows are bottom-up, PNG's top-down
+    Image image{width_, height_, 3, std::vector<std::uint8_t>(rgba.size() / 4 * 3)};
+    for (int y = 0; y < height_; ++y) {
+        const std::uint8_t* from = rgba.data() + size_t(height_ - 1 - y) * size_t(width_) * 4;
+        std::uint8_t* to = image.pixels.data() + size_t(y) * size_t(width_) * 3;
+        for (int x = 0; x < width_; ++x, from += 4, to += 3) {
+            to[0] = from[0];
+            to[1] = from[1];
+            to[2] = from[2];
+        }
     }
-    return flipRows(image);  // GL's rows are bottom-up, PNG's top-down
+    return image;
 }
 
 }  // namespace pbr

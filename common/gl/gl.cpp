@@ -126,6 +126,10 @@ void finishGl() {
     }
 }
 
+void startGlWork() {
+    if (kWebGl) glFlush();
+}
+
 std::string glErrorName(GLenum error) {
     switch (error) {
         case GL_INVALID_ENUM:
