@@ -1197,6 +1197,43 @@ TEST(Gl, AGpuModelOutlivesTheModelItWasMadeFrom) {
     }
 }
 
+// An sRGB texture keeps every channel of its image: grey spreads to R, G and B (GL 3.3 has no
+// grey sRGB format), the alpha of grey + alpha stays alpha, RGB and RGBA go in as they are. The
+// stored bytes are read back as they are (glGetTexImage converts nothing) and compared with
+// what each pixel of the source says they must be.
+TEST(Gl, SrgbTexturesKeepEveryChannelOfTheirImage) {
+    const fs::path dir = test::testOutputDir("gl_srgb_texture");
+    App app = makeApp(dir);
+    for (int channels = 1; channels <= 4; ++channels) {
+        SCOPED_TRACE(std::to_string(channels) + " channels");
+        Image image{3, 2, channels, {}};
+        for (int i = 0; i < 3 * 2 * channels; ++i) image.pixels.push_back(std::uint8_t(17 + 37 * i));
+        const Texture2D texture(image, ColorSpace::Srgb, TextureFilter::Nearest);
+        glBindTexture(GL_TEXTURE_2D, texture.id());
+        GLint internalFormat = 0;
+        glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &internalFormat);
+        const bool alpha = channels == 2 || channels == 4;
+        EXPECT_EQ(GLenum(internalFormat), alpha ? GLenum(GL_SRGB8_ALPHA8) : GLenum(GL_SRGB8));
+        std::vector<std::uint8_t> stored(3 * 2 * 4);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, stored.data());
+        for (int x = 0; x < 3; ++x) {
+            for (int y = 0; y < 2; ++y) {
+                const bool grey = channels <= 2;
+                const std::array<int, 4> expected = {
+                    image.at(x, y, 0), image.at(x, y, grey ? 0 : 1), image.at(x, y, grey ? 0 : 2),
+                    alpha ? image.at(x, y, channels - 1) : 255};
+                for (int c = 0; c < 4; ++c) {
+                    EXPECT_EQ(int(stored[size_t((y * 3 + x) * 4 + c)]), expected[size_t(c)])
+                        << "texel " << x << "," << y << " channel " << c;
+                }
+            }
+        }
+    }
+    while (app.nextFrame()) {
+    }
+}
+
 // --help promises "a power of two up to what the GL allows (4 on llvmpipe)": the GL's limit
 // works, twice it is one clear error naming the limit.
 TEST(Gl, MoreSamplesThanTheDriverAllowsIsAClearError) {
