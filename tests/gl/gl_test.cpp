@@ -1207,7 +1207,9 @@ TEST(Gl, SrgbTexturesKeepEveryChannelOfTheirImage) {
     for (int channels = 1; channels <= 4; ++channels) {
         SCOPED_TRACE(std::to_string(channels) + " channels");
         Image image{3, 2, channels, {}};
-        for (int i = 0; i < 3 * 2 * channels; ++i) image.pixels.push_back(std::uint8_t(17 + 37 * i));
+        for (int i = 0; i < 3 * 2 * channels; ++i) {
+            image.pixels.push_back(std::uint8_t(17 + 37 * i));
+        }
         const Texture2D texture(image, ColorSpace::Srgb, TextureFilter::Nearest);
         glBindTexture(GL_TEXTURE_2D, texture.id());
         GLint internalFormat = 0;
