@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <string_view>
 
+#include "context/web.h"
+
 #ifndef PBR_WEB_SAMPLES
 #error "PBR_WEB_SAMPLES lists the samples: X(01_lighting) X(02_lighting_textured) ..."
 #endif
@@ -14,10 +16,18 @@
 PBR_WEB_SAMPLES
 #undef X
 
+// The sample's exit code reaches the page however its main() returned: directly, or (once it has
+// given the browser a turn, which every run that draws does) through web::exitWithAfterMain,
+// since emscripten drops the return value of a main() that resumed.
+int exitWith(int code) {
+    pbr::web::exitWithAfterMain(code);
+    return code;
+}
+
 int main(int argc, char** argv) {
     const std::string_view program = argc > 0 ? argv[0] : "";
 #define X(name) \
-    if (program == #name) return pbr_main_##name(argc, argv);
+    if (program == #name) return exitWith(pbr_main_##name(argc, argv));
     PBR_WEB_SAMPLES
 #undef X
     std::fprintf(stderr, "error: no sample named '%.*s' in this page's program\n",

@@ -130,6 +130,9 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
         }
     }
 
+    // A page's header has said which bundle it loaded: now the program sets up (nothing natively).
+    web::status("starting");
+
     if (!options_.headless) {
         std::string whyNot;
         context_ = createGlfwContext(config_.title, options_.width, options_.height,
@@ -228,8 +231,6 @@ void App::useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax,
 }
 
 App::~App() {
-    // An App is the run: ending by an exception is a failure (exit code 1), else a success.
-    web::exitWithAfterMain(std::uncaught_exceptions() > 0 ? 1 : 0);
     panel_.reset();
     shaders_.clear();
     target_.reset();
@@ -436,9 +437,12 @@ bool App::nextFrame() {
     if (input.togglePanel && panel_) {
         panelShown_ = !panelShown_;
         if (context_->windowed() && !config_.orbitCamera && !config_.fixedView) {
-        context_->setCursorCaptured(mouseLook());
+            context_->setCursorCaptured(mouseLook());
+        }
     }
-    }
+    // A page's longest wait is its first frame (a software WebGL draws it for a second or more):
+    // its header says so meanwhile (nothing natively).
+    if (frameIndex_ == 0) web::announceFirstFrame();
 
     const double now = context_->seconds();
     if (frameIndex_ == 0) {

@@ -32,6 +32,12 @@ EM_ASYNC_JS(void, pbr_wait_for_paint, (), {
 EM_JS(void, pbr_status, (const char* text), {
     if (Module["pbrStatus"]) Module["pbrStatus"](UTF8ToString(text));
 });
+// Whether the page's WebGL is drawn by a software rasterizer (the unmasked renderer's name).
+EM_JS(int, pbr_software_webgl, (), {
+    const info = GLctx && GLctx.getExtension("WEBGL_debug_renderer_info");
+    const name = info ? String(GLctx.getParameter(info.UNMASKED_RENDERER_WEBGL)) : "";
+    return /swiftshader|llvmpipe|software/i.test(name) ? 1 : 0;
+});
 EM_JS(void, pbr_first_frame_submitted, (), {
     if (Module["pbrFirstFrameSubmitted"]) Module["pbrFirstFrameSubmitted"]();
 });
@@ -114,6 +120,12 @@ void status(const std::string& text) {
     pbr_status(text.c_str());
     waited = true;
     pbr_wait_for_paint();
+}
+
+void announceFirstFrame() {
+    status(pbr_software_webgl() ? "drawing the first frame (WebGL on the CPU, without a GPU: "
+                                  "this takes a second or more)"
+                                : "drawing the first frame");
 }
 
 void waitForNextFrame() {

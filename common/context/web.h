@@ -24,9 +24,13 @@ void waitForNextFrame();
 // What the page is doing, in its header ("computing sunny_courtyard.environment.ktx"); the
 // browser is given a turn to show it before the work goes on.
 void status(const std::string& text);
+// Before the first frame's commands: the header says the first frame is being drawn, and, where
+// the browser draws WebGL on the CPU (no GPU: SwiftShader, llvmpipe), that this takes a while.
+void announceFirstFrame();
 // Once main() has waited for a frame, the browser no longer sees what it returns (emscripten
-// 3.1.6 drops the return value of a main that resumed): the App says how the run ended as it
-// goes, and the page exits with that code right after main() returns.
+// 3.1.6 drops the return value of a main that resumed): the program's main() (web/
+// samples_main.cpp) hands the sample's exit code here, and the page exits with it right after
+// main() returns.
 void exitWithAfterMain(int code);
 // The page's controls (web/shell.html builds them as form elements): the sample's flag
 // declarations as JSON, handed over once; and what the controls changed since the last call, a
@@ -46,6 +50,7 @@ void showLabels(int width, int height);
 inline void handOver(const std::filesystem::path&) {}
 inline void waitForNextFrame() {}
 inline void status(const std::string&) {}
+inline void announceFirstFrame() {}
 inline void exitWithAfterMain(int) {}
 #endif
 

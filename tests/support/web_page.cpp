@@ -90,6 +90,9 @@ PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
             page.log = readBytes(entry.path());
         } else if (name == "address.txt") {
             page.address = readBytes(entry.path());
+        } else if (name == "said.txt") {
+            std::istringstream lines(readBytes(entry.path()));
+            for (std::string line; std::getline(lines, line);) page.said.push_back(line);
         } else if (name == "exit.txt") {
             page.exitCode = std::atoi(readBytes(entry.path()).c_str());
         } else if (entry.is_regular_file() && name.front() != '.') {

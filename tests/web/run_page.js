@@ -1,8 +1,8 @@
 // Opens one web sample's page in headless Chromium and waits, in real time, until the sample has
 // exited (the page's #pbr-exit, web/shell.html), then leaves what the page holds in a folder:
-// every file the run wrote, its log (page.log), its exit code (exit.txt) and the page's query
-// string at the end (address.txt: the page's controls keep it current). The browser is
-// driven over the DevTools protocol on a pipe (tests/support/chromium_pipe.js), so nothing waits
+// every file the run wrote, its log (page.log), its exit code (exit.txt), the page's query
+// string at the end (address.txt: the page's controls keep it current) and every text its
+// header showed, one a line (said.txt). The browser is driven over the DevTools protocol on a pipe (tests/support/chromium_pipe.js), so nothing waits
 // on a guess: not a virtual-time budget, which can end a page whose frame loop is still running.
 //
 //     node tests/web/run_page.js CHROMIUM URL DIR [TIMEOUT_S]
@@ -30,8 +30,10 @@ const collect = `(function () {
     files[e.getAttribute("data-name")] = e.textContent;
   });
   var log = document.getElementById("pbr-log");
+  var status = document.getElementById("pbr-status");
   return JSON.stringify({ exit: exit.textContent, log: log ? log.textContent : "", files: files,
-                         address: location.search });
+                         address: location.search,
+                         said: (status && status.getAttribute("data-said")) || "" });
 })()`;
 
 function finish(code, why) {
@@ -55,6 +57,7 @@ function finish(code, why) {
       writeWhole(path.join(dir, "page.log"), page.log);
       writeWhole(path.join(dir, "exit.txt"), page.exit);
       writeWhole(path.join(dir, "address.txt"), page.address);
+      writeWhole(path.join(dir, "said.txt"), page.said);
       clearTimeout(timer);
       finish(0);
     }

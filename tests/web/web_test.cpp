@@ -188,6 +188,12 @@ TEST(Web, TwoRunsGiveTheSameBytes) {
         EXPECT_GT(std::stod(precompute[1]), 0.0) << "the page computed no map: " << page.log;
         EXPECT_EQ(page.files.count("sunny_courtyard.prefiltered.ktx"), 1u) << page.log;
         EXPECT_EQ(page.files.count("sunny_courtyard.irradiance.ktx"), 1u) << page.log;
+        // the header named each map while the page computed it
+        for (const std::string map : {"irradiance", "prefiltered"}) {
+            const std::string step = "computing sunny_courtyard." + map + ".ktx";
+            EXPECT_NE(std::find(page.said.begin(), page.said.end(), step), page.said.end())
+                << step;
+        }
         if (first.empty()) {
             first = page.files;
         } else {
@@ -233,12 +239,19 @@ TEST(Web, AModelThePageDoesNotCarryIsOneLine) {
 
 // Without --headless the page runs the sample's own loop, one frame per animation frame of the
 // browser (the loop waits at each swap), shows the canvas, and writes the last frame on request.
+// Meanwhile its header says what it is doing, each step in turn: the bundle it loads, the
+// program setting up, the first frame being drawn (on the CPU here: SwiftShader), then running.
 TEST(Web, TheFrameLoopRunsInThePage) {
     PBR_NEED_WEB("04_ibl_irradiance");
     const fs::path dir = testOutputDir("web_loop");
     const PageRun page = runPage(
         "04_ibl_irradiance", {"--frames", "3", "--size", "320x180", "--output", "last.png"}, dir);
     EXPECT_EQ(page.exitCode, std::optional<int>(0)) << page.log;
+    const std::vector<std::string> said = {
+        "starting", "loading assets/environment.js", "starting",
+        "drawing the first frame (WebGL on the CPU, without a GPU: this takes a second or more)",
+        "running", "exit 0"};
+    EXPECT_EQ(page.said, said);
     ASSERT_EQ(page.files.count("last.png"), 1u) << page.log;
     EXPECT_NE(page.log.find("(320x180, msaa 4, glfw, "), std::string::npos) << page.log;
     const Image image = readImage(dir / "last.png", 3);
