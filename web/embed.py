@@ -46,8 +46,8 @@ LOADER = """
 Module["pbrFiles"] = function (data, files) {
   var FS = Module.FS;
   function decode(text) {
-    // the browser's own decoder where it has one (Chromium 140 on): 5 MB of material maps in
-    // 12 ms instead of 60 ms through atob and a loop
+    // the browser's own decoder where it has one (Chromium 140 on): atob and the loop below
+    // took 0.1 s of 09's start-up in a CPU profile
     if (Uint8Array.fromBase64) return Uint8Array.fromBase64(text);
     var binary = atob(text), bytes = new Uint8Array(binary.length);
     for (var i = 0; i < binary.length; ++i) bytes[i] = binary.charCodeAt(i);

@@ -112,7 +112,7 @@ void finishGl();
 // the GL runs in another process and leaves uploads for the first draw, so a page that decodes
 // textures one after the other has each uploaded (and its mipmaps made) while it decodes the
 // next. 09's first frame came 0.2-0.3 s sooner (1.39-1.51 s against 1.61-1.81 s, 2026-12-05).
-// Natively it does nothing (the GL's own threads already overlap the next call).
+// Natively it does nothing: the GL runs in the program's own process there.
 void startGlWork();
 
 // "GL_INVALID_OPERATION" for 0x0502, and so on.

@@ -119,6 +119,7 @@ Texture2D::Texture2D(const HdrImage& image)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    startGlWork();
 }
 
 Texture2D::Texture2D(int width, int height, GLenum internalFormat)

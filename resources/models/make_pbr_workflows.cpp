@@ -244,25 +244,27 @@ int main(int argc, char** argv) try {
     fs::create_directories(dir);
     pbr::OutputBatch files;
 
-    // The textures: colour and roughness bands for the metal, a checker for the dielectric.
-    files.add(dir / "pbr_workflows_metal_color.png", pbr::encodePng(makeImage(kSize, 3, [](int, int y) {
-                  return glm::ivec4(metalColor(y), 255);
-              }), pbr::PngEncoding::Small));
-    files.add(dir / "pbr_workflows_metal_mr.png", pbr::encodePng(makeImage(kSize, 3, [](int x, int) {
-                  return glm::ivec4(0, roughnessByte(x), 255, 255);
-              }), pbr::PngEncoding::Small));
-    files.add(dir / "pbr_workflows_metal_sg.png", pbr::encodePng(makeImage(kSize, 4, [](int x, int y) {
-                  return glm::ivec4(metalColor(y), 255 - roughnessByte(x));
-              }), pbr::PngEncoding::Small));
-    files.add(dir / "pbr_workflows_checker.png", pbr::encodePng(makeImage(kSize, 3, [](int x, int y) {
-                  return glm::ivec4(checkerColor(x, y), 255);
-              }), pbr::PngEncoding::Small));
-    files.add(dir / "pbr_workflows_dielectric_mr.png", pbr::encodePng(makeImage(kSize, 3, [](int x, int) {
-                  return glm::ivec4(0, roughnessByte(x), 0, 255);
-              }), pbr::PngEncoding::Small));
-    files.add(dir / "pbr_workflows_dielectric_sg.png", pbr::encodePng(makeImage(kSize, 4, [](int x, int) {
-                  return glm::ivec4(255, 255, 255, 255 - roughnessByte(x));
-              }), pbr::PngEncoding::Small));
+    // The textures: colour and roughness bands for the metal, a checker for the dielectric,
+    // written as the pages carry them (PngEncoding::Small).
+    const auto texture = [&](const char* name, const Image& image) {
+        files.add(dir / name, pbr::encodePng(image, pbr::PngEncoding::Small));
+    };
+    texture("pbr_workflows_metal_color.png",
+            makeImage(kSize, 3, [](int, int y) { return glm::ivec4(metalColor(y), 255); }));
+    texture("pbr_workflows_metal_mr.png", makeImage(kSize, 3, [](int x, int) {
+                return glm::ivec4(0, roughnessByte(x), 255, 255);
+            }));
+    texture("pbr_workflows_metal_sg.png", makeImage(kSize, 4, [](int x, int y) {
+                return glm::ivec4(metalColor(y), 255 - roughnessByte(x));
+            }));
+    texture("pbr_workflows_checker.png",
+            makeImage(kSize, 3, [](int x, int y) { return glm::ivec4(checkerColor(x, y), 255); }));
+    texture("pbr_workflows_dielectric_mr.png", makeImage(kSize, 3, [](int x, int) {
+                return glm::ivec4(0, roughnessByte(x), 0, 255);
+            }));
+    texture("pbr_workflows_dielectric_sg.png", makeImage(kSize, 4, [](int x, int) {
+                return glm::ivec4(255, 255, 255, 255 - roughnessByte(x));
+            }));
 
     struct Output {
         std::string name;

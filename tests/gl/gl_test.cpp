@@ -1214,14 +1214,13 @@ TEST(Gl, SrgbTexturesKeepEveryChannelOfTheirImage) {
         glBindTexture(GL_TEXTURE_2D, texture.id());
         GLint internalFormat = 0;
         glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &internalFormat);
-        const bool alpha = channels == 2 || channels == 4;
+        const bool alpha = channels == 2 || channels == 4, grey = channels <= 2;
         EXPECT_EQ(GLenum(internalFormat), alpha ? GLenum(GL_SRGB8_ALPHA8) : GLenum(GL_SRGB8));
         std::vector<std::uint8_t> stored(3 * 2 * 4);
         glPixelStorei(GL_PACK_ALIGNMENT, 1);
         glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, stored.data());
         for (int x = 0; x < 3; ++x) {
             for (int y = 0; y < 2; ++y) {
-                const bool grey = channels <= 2;
                 const std::array<int, 4> expected = {
                     image.at(x, y, 0), image.at(x, y, grey ? 0 : 1), image.at(x, y, grey ? 0 : 2),
                     alpha ? image.at(x, y, channels - 1) : 255};

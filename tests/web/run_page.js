@@ -2,8 +2,9 @@
 // exited (the page's #pbr-exit, web/shell.html), then leaves what the page holds in a folder:
 // every file the run wrote, its log (page.log), its exit code (exit.txt), the page's query
 // string at the end (address.txt: the page's controls keep it current) and every text its
-// header showed, one a line (said.txt). The browser is driven over the DevTools protocol on a pipe (tests/support/chromium_pipe.js), so nothing waits
-// on a guess: not a virtual-time budget, which can end a page whose frame loop is still running.
+// header showed, one a line (said.txt). The browser is driven over the DevTools protocol on a
+// pipe (tests/support/chromium_pipe.js), so nothing waits on a guess: not a virtual-time budget,
+// which can end a page whose frame loop is still running.
 //
 //     node tests/web/run_page.js CHROMIUM URL DIR [TIMEOUT_S]
 //
