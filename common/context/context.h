@@ -68,6 +68,11 @@ private:
 std::unique_ptr<Context> createOffscreenContext(const std::string& backend, int width, int height,
                                                 bool debug);
 
+// Under LeakSanitizer: the process's leak check is made at exit before the GL driver's own exit
+// handlers run, not after them (see context.cpp); elsewhere nothing. Called once a context of a
+// driver exists (every backend does it; a second call does nothing).
+void checkLeaksBeforeTheDriverExits();
+
 // The offscreen backends this build has, in the automatic order; and those of them that always
 // render in software (the ones the golden tests compare).
 std::vector<std::string> offscreenBackends();

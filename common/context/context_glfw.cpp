@@ -183,6 +183,7 @@ std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, 
     }
     GLFWwindow* window = openWindow(title, width, height, debug, whyNot);
     if (!window) return nullptr;
+    checkLeaksBeforeTheDriverExits();
     return std::make_unique<GlfwContext>(window, captureCursor);
 }
 
