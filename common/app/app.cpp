@@ -6,8 +6,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
+#include "app/panel_script.h"
 #include "base/error.h"
 #include "base/output.h"
 #include "base/paths.h"
@@ -48,30 +50,12 @@ std::string jsonEscape(const std::string& text) {
     return out;
 }
 
-// PBR_PANEL_SCRIPT: the mouse over the picture, a frame a line: "x y button" (framebuffer pixels
-// from the top-left, the left button 0 or 1), or "-" for a frame without the mouse. Frames past
-// the last line have none. The tests drive the panel headless with it.
+// PBR_PANEL_SCRIPT (see panel_script.h): the tests drive the panel headless with it.
 std::vector<InputFrame> readPanelScript(const fs::path& path) {
     std::ifstream in(path);
     if (!in) throw Error(path.string() + ": cannot read the panel script (PBR_PANEL_SCRIPT)");
-    std::vector<InputFrame> frames;
-    std::string line;
-    while (std::getline(in, line)) {
-        InputFrame frame;
-        if (line != "-") {
-            std::istringstream fields(line);
-            int button = 0;
-            std::string rest;
-            if (!(fields >> frame.cursor.x >> frame.cursor.y >> button) || (fields >> rest) ||
-                (button != 0 && button != 1)) {
-                throw Error(path.string() + ":" + std::to_string(frames.size() + 1) + ": '" +
-                            line + "' is not 'x y button' (button 0 or 1) or '-'");
-            }
-            frame.leftButton = button == 1;
-        }
-        frames.push_back(frame);
-    }
-    return frames;
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    return parsePanelScript(text, path.string());
 }
 
 #ifdef PBR_WEBGL

@@ -113,8 +113,9 @@ std::string formatNumber(double value) {
     return out.str();
 }
 
+// A user's text in a message, quoted, one line whatever it holds.
 std::string inQuotes(const std::string& text) {
-    return "'" + text + "'";
+    return "'" + printable(text) + "'";
 }
 
 std::vector<double> parseNumberList(const std::string& flag, const std::string& value,
@@ -291,8 +292,8 @@ int parseIntFlag(const std::string& flag, const std::string& value, int min, int
     std::errc error{};
     if (!parseNumber(value, number, error)) {
         if (error == std::errc::result_out_of_range) {
-            fail(flag + ": " + value + " is out of range [" + std::to_string(min) + ", " +
-                 std::to_string(max) + "]");
+            fail(flag + ": " + printable(value) + " is out of range [" + std::to_string(min) +
+                 ", " + std::to_string(max) + "]");
         }
         fail(flag + ": " + inQuotes(value) + " is not a whole number");
     }
@@ -310,7 +311,7 @@ double parseNumberFlag(const std::string& flag, const std::string& value, double
         std::string("[").append(formatNumber(min)).append(", ").append(formatNumber(max)) + "]";
     if (!parseNumber(value, number, error)) {
         if (error == std::errc::result_out_of_range) {
-            fail(flag + ": " + value + " is out of range " + range);
+            fail(flag + ": " + printable(value) + " is out of range " + range);
         }
         fail(flag + ": " + inQuotes(value) + " is not a number");
     }

@@ -40,4 +40,23 @@ int reportFailure() {
     }
 }
 
+std::string printable(std::string_view text) {
+    std::string out;
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (byte < 0x20 || byte == 0x7f) {
+            char escape[8];
+            std::snprintf(escape, sizeof escape, "\\x%02x", unsigned(byte));
+            out += escape;
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
 }  // namespace pbr

@@ -4,6 +4,7 @@
 // pbr::reportFailure(); }`, which prints that line and picks the exit code.
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace pbr {
 
@@ -32,5 +33,9 @@ struct ExitRequest {
 // Prints the current exception as one line on stderr ("error: ...") and returns the exit code.
 // Call it only inside a catch block.
 int reportFailure();
+
+// `text` (a name read from a file, an argument) as a one-line message shows it: control
+// characters written as escapes ("\n", "\t", "\x01"), everything else as it is.
+std::string printable(std::string_view text);
 
 }  // namespace pbr

@@ -87,7 +87,13 @@ std::string utf8Path(const fs::path& path) {
 
 std::string readTextFile(const fs::path& path) {
     std::error_code ec;
-    if (fs::is_directory(path, ec)) throw Error(displayPath(path) + ": is a directory, not a file");
+    const fs::file_status status = fs::status(path, ec);
+    if (fs::is_directory(status)) throw Error(displayPath(path) + ": is a directory, not a file");
+    // A device or a pipe has no end to read to (/dev/zero, /dev/urandom: the fuzzing of shader
+    // includes found it, reading until memory ran out): files only.
+    if (fs::exists(status) && !fs::is_regular_file(status)) {
+        throw Error(displayPath(path) + ": not a file (a device, a pipe or a socket)");
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(displayPath(path) + ": cannot open: " + std::strerror(errno));
     // One read of the whole size (a stream copied through its buffer took 0.25 s for 1.6 MB in

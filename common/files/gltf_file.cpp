@@ -1,11 +1,16 @@
 #include "files/gltf_file.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <set>
+
+#include "base/error.h"
 
 namespace pbr {
 
@@ -95,7 +100,7 @@ private:
                     }
                     return ok;
                 }
-                return fail(std::string("unexpected '") + peek() + "'", "a value");
+                return fail("unexpected '" + printable(text_.substr(at_, 1)) + "'", "a value");
         }
     }
 
@@ -164,7 +169,7 @@ private:
             } else if (const char* known = std::strchr("\"\\/bfnrt", escape)) {
                 if (out) out->push_back("\"\\/\b\f\n\r\t"[known - "\"\\/bfnrt"]);
             } else {
-                return fail(std::string("bad escape '\\") + escape + "'", "a string");
+                return fail("bad escape '\\" + printable(text_.substr(at_, 1)) + "'", "a string");
             }
             ++at_;
         }
@@ -263,6 +268,12 @@ std::optional<std::string> glbError(std::string_view bytes) {
                    " are left";
         }
         if (chunk == 0 && type != kChunkJson) return "the first GLB chunk is not JSON";
+        // glTF 2.0 4.4.3: chunks end on 4-byte boundaries (Assimp 5.2 looks for the BIN chunk at
+        // the next one)
+        if (chunk == 0 && chunkLength % 4 != 0) {
+            return "GLB chunk 0 (JSON) is " + std::to_string(chunkLength) +
+                   " bytes, not a multiple of 4";
+        }
         if (chunk == 0) {
             if (auto error = jsonSyntaxError(bytes.substr(at, chunkLength)))
                 return "in the GLB's JSON chunk: " + *error;
@@ -383,6 +394,656 @@ std::optional<int> texCoordOverride(const JsonValue& textureInfo) {
 std::optional<std::string> gltfContainerError(std::string_view bytes) {
     if (bytes.substr(0, 4) == "glTF") return glbError(bytes);
     return jsonSyntaxError(bytes);
+}
+
+std::optional<std::uint64_t> glbBinLength(std::string_view bytes) {
+    if (bytes.substr(0, 4) != "glTF" || glbError(bytes) || read32(bytes, 4) != 2)
+        return std::nullopt;
+    const size_t bin = 20 + size_t(read32(bytes, 12));  // the chunk after the JSON chunk
+    if (bytes.size() - bin < 8) return 0;
+    return read32(bytes, bin);
+}
+
+namespace {
+
+// JSON numbers are exact whole numbers below 2^53: larger sizes and counts are refused, so that
+// the sums below fit in 64 bits (at most 2^53 * 252 + 2^54).
+constexpr std::uint64_t kLargestWhole = std::uint64_t(1) << 53;
+
+std::string numberText(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", value);
+    return text;
+}
+
+// A JSON value as a message quotes it.
+std::string describe(const JsonValue& value) {
+    switch (value.type) {
+        case JsonValue::Type::Null:
+            return "null";
+        case JsonValue::Type::Bool:
+            return value.boolean ? "true" : "false";
+        case JsonValue::Type::Number:
+            return numberText(value.number);
+        case JsonValue::Type::String: {
+            const std::string_view text = value.text;
+            return "'" + printable(text.substr(0, 40)) + (text.size() > 40 ? "...'" : "'");
+        }
+        case JsonValue::Type::Array:
+            return "an array";
+        case JsonValue::Type::Object:
+            return "an object";
+    }
+    return "a value";
+}
+
+// Bytes of one component of a glTF componentType, or 0 for a code glTF does not have.
+std::uint64_t componentSize(std::uint64_t componentType) {
+    switch (componentType) {
+        case 5120:  // BYTE
+        case 5121:  // UNSIGNED_BYTE
+            return 1;
+        case 5122:  // SHORT
+        case 5123:  // UNSIGNED_SHORT
+            return 2;
+        case 5125:  // UNSIGNED_INT
+        case 5126:  // FLOAT
+            return 4;
+        default:
+            return 0;
+    }
+}
+
+// Components of an accessor type, or 0 for a type glTF does not have.
+std::uint64_t componentCount(std::string_view type) {
+    const std::pair<std::string_view, std::uint64_t> types[] = {
+        {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4},
+        {"MAT2", 4},   {"MAT3", 9}, {"MAT4", 16}};
+    for (const auto& [name, count] : types) {
+        if (type == name) return count;
+    }
+    return 0;
+}
+
+// glTF 2.0 3.6.2.4: each column of a matrix starts at a multiple of 4 bytes, so MAT2 and MAT3
+// of 1-byte components and MAT3 of 2-byte ones have padding in each element.
+std::uint64_t elementSize(std::string_view type, std::uint64_t component) {
+    if (type == "MAT2" && component == 1) return 8;
+    if (type == "MAT3" && component == 1) return 12;
+    if (type == "MAT3" && component == 2) return 24;
+    return componentCount(type) * component;
+}
+
+// Assimp 5.2's set of a JOINTS or WEIGHTS attribute (it reads "JOINTS_2" and "JOINTSX" as sets 2
+// and 0), or -1 for other attributes.
+int skinSet(std::string_view attribute, std::string_view semantic) {
+    if (!attribute.starts_with(semantic)) return -1;
+    const std::string_view rest = attribute.substr(semantic.size());
+    if (!rest.starts_with("_")) return 0;
+    const long set = std::strtol(std::string(rest.substr(1)).c_str(), nullptr, 10);
+    return int(std::clamp(set, 0L, 1000000L));  // atoi's, without its overflow
+}
+
+// What a message calls a part of the file: "accessor 3", whose members read "accessor 3's count";
+// or "accessor 3's sparse.indices", whose members read "accessor 3's sparse.indices.byteOffset".
+struct Part {
+    std::string name, members;
+    explicit Part(std::string partName) : name(std::move(partName)), members(name + "'s ") {}
+    Part(const Part& owner, std::string_view path)
+        : name(owner.members + std::string(path)), members(name + ".") {}
+};
+
+// The checks of gltfStructureError. Assimp 5.2 reads a buffer, buffer view or accessor only when
+// something it reads names it (a file with a broken view nothing uses loads, as Debian's
+// IncorrectVertexArrays/Cube.gltf does), so these check them the same way, each once, starting
+// from what names them: the meshes of the nodes, every skin, animation and image. A refusal
+// keeps the first reason found and returns false.
+class StructureChecker {
+public:
+    StructureChecker(const JsonValue& document, std::optional<std::uint64_t> binLength)
+        : document_(document), binLength_(binLength) {}
+
+    std::optional<std::string> check() {
+        if (!version() || !list("buffers", buffers_) || !list("bufferViews", views_) ||
+            !list("accessors", accessors_) || !list("meshes", meshes_) || !list("nodes", nodes_) ||
+            !list("skins", skins_) || !list("animations", animations_) ||
+            !list("images", images_) || !meshes() || !skins() || !animations() || !images() ||
+            !skinnedNodes())
+            return error_;
+        return std::nullopt;
+    }
+
+private:
+    struct View {
+        std::uint64_t buffer, offset, length, stride;  // stride 0: none given
+    };
+    struct Accessor {
+        std::uint64_t count, componentType;
+        std::string type;
+    };
+
+    bool fail(std::string reason) {
+        error_ = std::move(reason);
+        return false;
+    }
+
+    static size_t sizeOf(const JsonValue* list) { return list ? list->items.size() : 0; }
+
+    bool version() {
+        if (document_.type != JsonValue::Type::Object)
+            return fail("the JSON is " + describe(document_) + ", not an object as in a glTF file");
+        const JsonValue* asset = document_.find("asset");
+        const JsonValue* version = asset ? asset->find("version") : nullptr;
+        if (!version) {
+            // glTF 1.0 kept its parts in objects keyed by name, where glTF 2.0 has arrays.
+            for (const char* list : {"accessors", "bufferViews", "buffers", "meshes", "nodes",
+                                     "materials", "scenes"}) {
+                const JsonValue* items = document_.find(list);
+                if (items && items->type == JsonValue::Type::Object) {
+                    return fail(
+                        "glTF 1.0 is not read: the samples take glTF 2.0 (there is no "
+                        "asset.version, and " +
+                        std::string(list) + " is an object, as in glTF 1.0)");
+                }
+            }
+            return fail("asset.version is missing: a glTF 2.0 file says \"2.0\" there");
+        }
+        if (version->type == JsonValue::Type::Number) {
+            // as Assimp's glTF 1.0 reader takes it; its glTF 2.0 reader takes only a string
+            char text[32];
+            std::snprintf(text, sizeof text, "%.1f", version->number);
+            if (std::string_view(text).starts_with("2."))
+                return fail("asset.version is " + describe(*version) + ", not the string \"2.0\"");
+            return fail("glTF " + std::string(text) + " is not read: the samples take glTF 2.0");
+        }
+        // glTF 2.0 3.2: "<major>.<minor>"
+        const std::string& text = version->text;
+        const size_t dot = text.find('.');
+        const bool number = version->type == JsonValue::Type::String && dot != 0 &&
+                            dot != std::string::npos && dot + 1 < text.size() &&
+                            text.find_first_not_of("0123456789.") == std::string::npos &&
+                            text.find('.', dot + 1) == std::string::npos;
+        if (!number) {
+            return fail("asset.version is " + describe(*version) +
+                        ", not a version such as \"2.0\"");
+        }
+        if (text.substr(0, dot) != "2")
+            return fail("glTF " + text + " is not read: the samples take glTF 2.0");
+        return true;
+    }
+
+    // The top-level list `name` (nullptr when the file has none): Assimp refuses one that is
+    // not an array, but only after it read those it reads first.
+    bool list(const char* name, const JsonValue*& out) {
+        out = document_.find(name);
+        if (out && out->type != JsonValue::Type::Array)
+            return fail(std::string(name) + " is " + describe(*out) + ", not an array");
+        return true;
+    }
+
+    // Item `index` of a top-level list, known to be in it, as an object (nullptr: refused).
+    const JsonValue* object(const JsonValue* list, const std::string& name, int index) {
+        const JsonValue& item = list->items[size_t(index)];
+        if (item.type == JsonValue::Type::Object) return &item;
+        fail(name + " is " + describe(item) + ", not an object");
+        return nullptr;
+    }
+
+    // A size or count: `member` of `owner`, or `fallback` when absent (nullopt: required).
+    bool whole(const JsonValue& owner, const Part& part, const char* member,
+               std::optional<std::uint64_t> fallback, std::uint64_t least, std::uint64_t& out) {
+        const JsonValue* value = owner.find(member);
+        if (!value) {
+            if (!fallback) return fail(part.name + " has no " + member);
+            out = *fallback;
+            return true;
+        }
+        const std::string what = part.members + member + " is " + describe(*value);
+        if (value->type != JsonValue::Type::Number || value->number < 0.0 ||
+            value->number != std::floor(value->number))
+            return fail(what + ", not a whole number");
+        if (value->number >= double(kLargestWhole)) return fail(what + ", too large");
+        out = std::uint64_t(value->number);
+        if (out < least) return fail(what + ": it must be " + std::to_string(least) + " or more");
+        return true;
+    }
+
+    // An index into the file's list of `kind`s (`count` of them): `member` of `owner`, -1 when
+    // absent and not `required`.
+    bool reference(const JsonValue& owner, const Part& part, const std::string& member,
+                   const char* kind, size_t count, bool required, int& out) {
+        out = -1;
+        const JsonValue* value = owner.find(member);
+        if (!value) return !required || fail(part.name + " has no " + member);
+        return index(*value, part.name + " names " + kind + " ",
+                     member == kind ? std::string() : " as its " + member, part.members + member,
+                     kind, count, out);
+    }
+
+    // `value` as an index of one of the `count` items of a list of `kind`s, said as
+    // "<names><index><as>, but the file has ..." or "<what> is ..., not an index".
+    bool index(const JsonValue& value, const std::string& names, const std::string& as,
+               const std::string& what, const char* kind, size_t count, int& out) {
+        out = indexOf(&value);
+        if (out < 0) return fail(what + " is " + describe(value) + ", not an index");
+        if (size_t(out) >= count) {
+            const std::string kinds = kind + std::string(count == 1                         ? ""
+                                                         : kind == std::string_view("mesh") ? "es"
+                                                                                            : "s");
+            return fail(names + std::to_string(out) + as + ", but the file has " +
+                        (count ? "only " + std::to_string(count) : std::string("no")) + " " +
+                        kinds);
+        }
+        return true;
+    }
+
+    // How many bytes of buffer `index` Assimp holds.
+    bool buffer(int index, std::uint64_t& size) {
+        if (bufferSizes_.empty()) bufferSizes_.resize(sizeOf(buffers_));
+        std::optional<std::uint64_t>& known = bufferSizes_[size_t(index)];
+        if (known) return size = *known, true;
+        const Part part("buffer " + std::to_string(index));
+        const JsonValue* buffer = object(buffers_, part.name, index);
+        if (!buffer || !whole(*buffer, part, "byteLength", std::nullopt, 1, size)) return false;
+        const JsonValue* uri = buffer->find("uri");
+        if (binLength_ && index == 0) {
+            // Assimp 5.2 reads a .glb's buffer 0 from the BIN chunk, whatever its uri says
+            if (size > *binLength_) {
+                return fail(part.name + " says " + std::to_string(size) + " bytes, " +
+                            (*binLength_ ? "the GLB's BIN chunk has " + std::to_string(*binLength_)
+                                         : std::string("and the GLB has no BIN chunk")));
+            }
+        } else if (uri && uri->type == JsonValue::Type::String && uri->text.starts_with("data:") &&
+                   !base64(part, uri->text, size)) {
+            return false;
+        }
+        known = size;
+        return true;
+    }
+
+    // A data URI's base64 text: Assimp 5.2 decodes only characters below 0x80 (it leaks the
+    // buffer when it meets another) and throws on a length that is not a multiple of 4.
+    bool base64(const Part& part, std::string_view uri, std::uint64_t length) {
+        const size_t comma = uri.find(',');
+        if (comma == std::string_view::npos) return true;  // not data: Assimp's to judge
+        // Assimp takes the data as base64 when a parameter after the media type starts so.
+        bool encoded = false;
+        for (size_t at = uri.find(';'); at < comma; at = uri.find(';', at + 1))
+            encoded = encoded || uri.substr(at + 1).starts_with("base64");
+        if (!encoded) return true;
+        const std::string_view text = uri.substr(comma + 1);
+        const std::string what = part.name + "'s base64 data";
+        if (text.size() % 4 != 0) {
+            return fail(what + " is " + std::to_string(text.size()) +
+                        " characters, not a multiple of 4");
+        }
+        const size_t bad = text.find_first_not_of(
+            "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/");
+        size_t padding = 0;
+        if (bad != std::string_view::npos) {
+            padding = text.size() - bad;
+            if (padding > 2 || text.substr(bad).find_first_not_of('=') != std::string_view::npos) {
+                const auto c = static_cast<unsigned char>(text[bad]);
+                char shown[16];
+                if (c > 0x20 && c < 0x7f)
+                    std::snprintf(shown, sizeof shown, "'%c'", c);
+                else
+                    std::snprintf(shown, sizeof shown, "byte 0x%02x", unsigned(c));
+                return fail(what + " has " + shown + " at character " + std::to_string(bad) +
+                            (c == '=' ? ", before its end" : ""));
+            }
+        }
+        const std::uint64_t decoded = text.size() / 4 * 3 - padding;
+        if (decoded != length) {
+            return fail(what + " holds " + std::to_string(decoded) +
+                        " bytes, its byteLength says " + std::to_string(length));
+        }
+        return true;
+    }
+
+    // Buffer view `index`, inside its buffer.
+    bool view(int index, View& out) {
+        if (viewsRead_.empty()) viewsRead_.resize(sizeOf(views_));
+        std::optional<View>& known = viewsRead_[size_t(index)];
+        if (known) return out = *known, true;
+        const Part part("bufferView " + std::to_string(index));
+        const JsonValue* view = object(views_, part.name, index);
+        int buffer = -1;
+        std::uint64_t size = 0;
+        if (!view || !reference(*view, part, "buffer", "buffer", sizeOf(buffers_), true, buffer) ||
+            !this->buffer(buffer, size) || !whole(*view, part, "byteOffset", 0, 0, out.offset) ||
+            !whole(*view, part, "byteLength", std::nullopt, 1, out.length) ||
+            !whole(*view, part, "byteStride", 0, 0, out.stride))
+            return false;
+        if (view->find("byteStride") && (out.stride < 4 || out.stride > 252 || out.stride % 4)) {
+            return fail(part.members + "byteStride is " + std::to_string(out.stride) +
+                        ", not a multiple of 4 from 4 to 252");
+        }
+        out.buffer = std::uint64_t(buffer);
+        const std::uint64_t end = out.offset + out.length;
+        if (end > size) {
+            return fail(part.name + " reads bytes " + std::to_string(out.offset) + "-" +
+                        std::to_string(end) + " of buffer " + std::to_string(buffer) +
+                        ", which has " + std::to_string(size));
+        }
+        known = out;
+        return true;
+    }
+
+    // Accessor `index`: a known component type and type, inside its buffer view, aligned.
+    bool accessor(int index, Accessor& out) {
+        if (accessorsRead_.empty()) accessorsRead_.resize(sizeOf(accessors_));
+        std::optional<Accessor>& known = accessorsRead_[size_t(index)];
+        if (known) return out = *known, true;
+        const Part part("accessor " + std::to_string(index));
+        const JsonValue* accessor = object(accessors_, part.name, index);
+        if (!accessor ||
+            !whole(*accessor, part, "componentType", std::nullopt, 0, out.componentType))
+            return false;
+        const std::uint64_t component = componentSize(out.componentType);
+        if (component == 0) {
+            return fail(part.members + "componentType is " + std::to_string(out.componentType) +
+                        ", not one of glTF's (5120-5123, 5125, 5126)");
+        }
+        const JsonValue* type = accessor->find("type");
+        if (!type) return fail(part.name + " has no type");
+        if (type->type != JsonValue::Type::String || componentCount(type->text) == 0) {
+            return fail(part.members + "type is " + describe(*type) +
+                        ", not SCALAR, VEC2, VEC3, VEC4, MAT2, MAT3 or MAT4");
+        }
+        out.type = type->text;
+        const std::uint64_t element = elementSize(out.type, component);
+        std::uint64_t offset = 0;
+        int viewIndex = -1;
+        if (!whole(*accessor, part, "count", std::nullopt, 1, out.count) ||
+            !whole(*accessor, part, "byteOffset", 0, 0, offset) ||
+            !reference(*accessor, part, "bufferView", "bufferView", sizeOf(views_), false,
+                       viewIndex))
+            return false;
+        if (viewIndex >= 0) {
+            // glTF 2.0 3.6.2.4: aligned to the component's size, inside the buffer view
+            View view{};
+            if (!this->view(viewIndex, view)) return false;
+            const std::string viewName = "bufferView " + std::to_string(viewIndex);
+            if (offset % component != 0) {
+                return fail(part.members + "byteOffset " + std::to_string(offset) +
+                            " is not a multiple of its component size, " +
+                            std::to_string(component) + " bytes");
+            }
+            if ((view.offset + offset) % component != 0) {
+                return fail(part.name + " starts at byte " + std::to_string(view.offset + offset) +
+                            " of buffer " + std::to_string(view.buffer) +
+                            ", not a multiple of its component size, " + std::to_string(component) +
+                            " bytes");
+            }
+            const std::uint64_t stride = view.stride ? view.stride : element;
+            if (stride < element) {
+                return fail(viewName + "'s byteStride of " + std::to_string(stride) +
+                            " bytes is less than the " + std::to_string(element) +
+                            " bytes of an element of " + part.name);
+            }
+            const std::uint64_t end = offset + (out.count - 1) * stride + element;
+            if (end > view.length) {
+                return fail(part.name + " reads bytes " + std::to_string(offset) + "-" +
+                            std::to_string(end) + " of " + viewName + ", which has " +
+                            std::to_string(view.length));
+            }
+        }
+        if (const JsonValue* sparse = accessor->find("sparse")) {
+            if (!sparseValues(*sparse, part, out.count, element)) return false;
+        }
+        known = out;
+        return true;
+    }
+
+    // Assimp 5.2 patches a sparse accessor as it reads it, from both views unchecked.
+    bool sparseValues(const JsonValue& sparse, const Part& accessor, std::uint64_t count,
+                      std::uint64_t element) {
+        const Part part(accessor, "sparse");
+        if (sparse.type != JsonValue::Type::Object)
+            return fail(part.name + " is " + describe(sparse) + ", not an object");
+        std::uint64_t values = 0;
+        if (!whole(sparse, part, "count", std::nullopt, 1, values)) return false;
+        if (values > count) {
+            return fail(part.members + "count is " + std::to_string(values) + ", more than the " +
+                        std::to_string(count) + " elements of " + accessor.name);
+        }
+        for (const char* member : {"indices", "values"}) {
+            const JsonValue* at = sparse.find(member);
+            if (!at) return fail(part.name + " has no " + member);
+            const Part where(part, member);
+            if (at->type != JsonValue::Type::Object)
+                return fail(where.name + " is " + describe(*at) + ", not an object");
+            int viewIndex = -1;
+            View view{};
+            std::uint64_t offset = 0, size = element;
+            if (!reference(*at, where, "bufferView", "bufferView", sizeOf(views_), true,
+                           viewIndex) ||
+                !this->view(viewIndex, view) || !whole(*at, where, "byteOffset", 0, 0, offset))
+                return false;
+            if (member == std::string_view("indices")) {
+                std::uint64_t type = 0;
+                if (!whole(*at, where, "componentType", std::nullopt, 0, type)) return false;
+                if (type != 5121 && type != 5123 && type != 5125) {
+                    return fail(where.members + "componentType is " + std::to_string(type) +
+                                ", not an unsigned integer's (5121, 5123, 5125)");
+                }
+                size = componentSize(type);
+            }
+            const std::uint64_t end = offset + values * size;
+            if (end > view.length) {
+                return fail(where.name + " reads bytes " + std::to_string(offset) + "-" +
+                            std::to_string(end) + " of bufferView " + std::to_string(viewIndex) +
+                            ", which has " + std::to_string(view.length));
+            }
+        }
+        return true;
+    }
+
+    // An accessor `member` of `owner` names (-1 when absent), checked.
+    bool usedAccessor(const JsonValue& owner, const Part& part, const std::string& member,
+                      int& out) {
+        Accessor read;
+        return reference(owner, part, member, "accessor", sizeOf(accessors_), false, out) &&
+               (out < 0 || accessor(out, read));
+    }
+
+    // The meshes of the nodes: each primitive's accessors (its morph targets' too), and enough
+    // vertices for a strip, fan or loop (Assimp 5.2 counts its faces as vertices - 2 or - 1,
+    // unsigned).
+    bool meshes() {
+        for (size_t n = 0; n < sizeOf(nodes_); ++n) {
+            const JsonValue& node = nodes_->items[n];
+            int mesh = -1;
+            if (!reference(node, Part("node " + std::to_string(n)), "mesh", "mesh", sizeOf(meshes_),
+                           false, mesh))
+                return false;
+            if (mesh < 0 || meshesRead_.contains(mesh)) continue;
+            meshesRead_.insert(mesh);
+            const JsonValue* primitives = meshes_->items[size_t(mesh)].find("primitives");
+            if (!primitives || primitives->type != JsonValue::Type::Array) continue;  // Assimp's
+            for (size_t p = 0; p < primitives->items.size(); ++p) {
+                if (!primitive(primitives->items[p], Part("primitive " + std::to_string(p) +
+                                                          " of mesh " + std::to_string(mesh))))
+                    return false;
+            }
+        }
+        return true;
+    }
+
+    bool primitive(const JsonValue& primitive, const Part& part) {
+        int indices = -1, position = -1;
+        if (!usedAccessor(primitive, part, "indices", indices)) return false;
+        std::vector<const JsonValue*> sets = {primitive.find("attributes")};
+        if (const JsonValue* targets = primitive.find("targets")) {
+            for (const JsonValue& target : targets->items) sets.push_back(&target);
+        }
+        for (const JsonValue* attributes : sets) {
+            for (const auto& [name, value] : attributes ? attributes->members : kNoMembers) {
+                int index = -1;
+                Accessor read;
+                if (!this->index(value, part.name + " names accessor ", " as its " + name,
+                                 part.members + name, "accessor", sizeOf(accessors_), index) ||
+                    !accessor(index, read))
+                    return false;
+                if (attributes == sets[0] && name == "POSITION" && position < 0) position = index;
+            }
+        }
+        std::uint64_t mode = 4;
+        if (!whole(primitive, part, "mode", 4, 0, mode)) return false;
+        const char* modes[] = {
+            "", "", "line loop", "line strip", "", "triangle strip", "triangle fan"};
+        std::uint64_t needed = 0;
+        if (mode == 2 || mode == 3) needed = 2;
+        if (mode == 5 || mode == 6) needed = 3;
+        const int counted = indices >= 0 ? indices : position;
+        const std::uint64_t count = counted >= 0 ? accessorsRead_[size_t(counted)]->count : 0;
+        if (count < needed) {
+            const char* what = indices >= 0 ? (count == 1 ? " index" : " indices")
+                                            : (count == 1 ? " vertex" : " vertices");
+            return fail(part.name + " is a " + modes[mode] + " of " + std::to_string(count) + what +
+                        ", fewer than " + std::to_string(needed));
+        }
+        return true;
+    }
+
+    // Every skin (Assimp 5.2 reads them all): joints that are nodes, and inverseBindMatrices,
+    // when given, of one MAT4 float a joint.
+    bool skins() {
+        for (size_t s = 0; s < sizeOf(skins_); ++s) {
+            const Part part("skin " + std::to_string(s));
+            const JsonValue* skin = object(skins_, part.name, int(s));
+            if (!skin) return false;
+            const JsonValue* joints = skin->find("joints");
+            if (!joints || joints->type != JsonValue::Type::Array || joints->items.empty())
+                return fail(part.name + " has no joints");
+            for (size_t j = 0; j < joints->items.size(); ++j) {
+                const std::string joint = part.members + "joint " + std::to_string(j);
+                int node = -1;
+                if (!index(joints->items[j], joint + " is node ", "", joint, "node", sizeOf(nodes_),
+                           node))
+                    return false;
+            }
+            int matrices = -1;
+            if (!usedAccessor(*skin, part, "inverseBindMatrices", matrices)) return false;
+            if (matrices < 0) continue;
+            const Accessor& accessor = *accessorsRead_[size_t(matrices)];
+            const std::string what =
+                part.members + "inverseBindMatrices (accessor " + std::to_string(matrices) + ")";
+            if (accessor.type != "MAT4" || accessor.componentType != 5126) {
+                return fail(what + " are " + accessor.type + " of " +
+                            std::to_string(accessor.componentType) + ", not MAT4 of FLOAT (5126)");
+            }
+            if (accessor.count < joints->items.size()) {
+                return fail(what + " hold " + std::to_string(accessor.count) +
+                            (accessor.count == 1 ? " matrix for " : " matrices for ") +
+                            std::to_string(joints->items.size()) + " joints");
+            }
+        }
+        return true;
+    }
+
+    // Every animation's samplers (Assimp 5.2 reads them all).
+    bool animations() {
+        for (size_t a = 0; a < sizeOf(animations_); ++a) {
+            const JsonValue* samplers = animations_->items[a].find("samplers");
+            for (size_t s = 0; samplers && s < samplers->items.size(); ++s) {
+                const Part part("sampler " + std::to_string(s) + " of animation " +
+                                std::to_string(a));
+                int input = -1, output = -1;
+                if (!usedAccessor(samplers->items[s], part, "input", input) ||
+                    !usedAccessor(samplers->items[s], part, "output", output))
+                    return false;
+            }
+        }
+        return true;
+    }
+
+    // Every image kept in a buffer view (Assimp 5.2 reads them all).
+    bool images() {
+        for (size_t i = 0; i < sizeOf(images_); ++i) {
+            int viewIndex = -1;
+            View read{};
+            if (!reference(images_->items[i], Part("image " + std::to_string(i)), "bufferView",
+                           "bufferView", sizeOf(views_), false, viewIndex) ||
+                (viewIndex >= 0 && !view(viewIndex, read)))
+                return false;
+        }
+        return true;
+    }
+
+    // A node with a skin and a mesh: Assimp 5.2 reads its primitives' JOINTS_n and WEIGHTS_n as
+    // pairs of WEIGHTS_0's count, and its skin's inverseBindMatrices without looking whether
+    // there are any.
+    bool skinnedNodes() {
+        for (size_t n = 0; n < sizeOf(nodes_); ++n) {
+            const JsonValue& node = nodes_->items[n];
+            const Part part("node " + std::to_string(n));
+            int skin = -1, mesh = -1;
+            if (!reference(node, part, "skin", "skin", sizeOf(skins_), false, skin) ||
+                !reference(node, part, "mesh", "mesh", sizeOf(meshes_), false, mesh))
+                return false;
+            if (skin < 0 || mesh < 0) continue;
+            const JsonValue* primitives = meshes_->items[size_t(mesh)].find("primitives");
+            for (size_t p = 0; primitives && p < primitives->items.size(); ++p) {
+                const std::string what = part.name + " has skin " + std::to_string(skin) +
+                                         ", but primitive " + std::to_string(p) + " of mesh " +
+                                         std::to_string(mesh);
+                if (!skinned(primitives->items[p], what)) return false;
+            }
+            if (!skins_->items[size_t(skin)].find("inverseBindMatrices")) {
+                return fail("skin " + std::to_string(skin) + " of " + part.name +
+                            " has no inverseBindMatrices, which Assimp 5.2 cannot do without");
+            }
+        }
+        return true;
+    }
+
+    // glTF 2.0 3.7.3.3: a skinned mesh's primitives have JOINTS_0 and WEIGHTS_0, the same sets
+    // of each, every accessor of a primitive the same count. (Their accessors are read by now.)
+    bool skinned(const JsonValue& primitive, const std::string& what) {
+        const JsonValue* attributes = primitive.find("attributes");
+        for (const char* needed : {"JOINTS_0", "WEIGHTS_0"}) {
+            if (!attributes || !attributes->find(needed)) return fail(what + " has no " + needed);
+        }
+        const auto countOf = [&](const JsonValue* value) {
+            return accessorsRead_[size_t(indexOf(value))]->count;
+        };
+        const std::uint64_t count = countOf(attributes->find("WEIGHTS_0"));
+        for (const auto& [name, value] : attributes->members) {
+            const int joints = skinSet(name, "JOINTS"), weights = skinSet(name, "WEIGHTS");
+            if (joints < 0 && weights < 0) continue;
+            const std::string pair = joints >= 0 ? "WEIGHTS_" + std::to_string(joints)
+                                                 : "JOINTS_" + std::to_string(weights);
+            if (!attributes->find(pair)) return fail(what + " has " + name + " without " + pair);
+            if (countOf(&value) != count) {
+                return fail(what + " has " + std::to_string(countOf(&value)) + " " + name +
+                            " for " + std::to_string(count) + " WEIGHTS_0");
+            }
+        }
+        return true;
+    }
+
+    static inline const std::vector<std::pair<std::string, JsonValue>> kNoMembers{};
+
+    const JsonValue& document_;
+    const std::optional<std::uint64_t> binLength_;
+    std::string error_;
+    const JsonValue *buffers_ = nullptr, *views_ = nullptr, *accessors_ = nullptr,
+                    *meshes_ = nullptr, *nodes_ = nullptr, *skins_ = nullptr,
+                    *animations_ = nullptr, *images_ = nullptr;
+    // What has been read, by index: what Assimp holds of each buffer, the views, the accessors
+    std::vector<std::optional<std::uint64_t>> bufferSizes_;
+    std::vector<std::optional<View>> viewsRead_;
+    std::vector<std::optional<Accessor>> accessorsRead_;
+    std::set<int> meshesRead_;
+};
+
+}  // namespace
+
+std::optional<std::string> gltfStructureError(const JsonValue& document,
+                                              std::optional<std::uint64_t> glbBinLength) {
+    return StructureChecker(document, glbBinLength).check();
 }
 
 }  // namespace pbr

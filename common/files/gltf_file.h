@@ -2,7 +2,9 @@
 // Checks of a glTF file's container before Assimp reads it: Assimp answers a truncated .gltf with
 // "No suitable reader found", because its format sniffing fails on broken JSON. These say what is
 // wrong instead: the JSON ends early, or is invalid at a line and column; a .glb's header or
-// chunks do not add up. Pure: no GL, no Assimp.
+// chunks do not add up. Then the parts the JSON describes, where Assimp 5.2 would crash on them
+// (gltfStructureError). Pure: no GL, no Assimp.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,6 +24,9 @@ std::optional<std::string> gltfContainerError(std::string_view bytes);
 
 // A JSON value, as parsed: what the glTF loader reads itself where Assimp does not.
 struct JsonValue {
+    // Declared, so that clang (with libstdc++) does not need std::pair<std::string, JsonValue>
+    // whole while it checks whether JsonValue is default-constructible inside its own definition.
+    JsonValue() = default;
     enum class Type { Null, Bool, Number, String, Array, Object };
     Type type = Type::Null;
     bool boolean = false;
@@ -43,6 +48,28 @@ std::optional<JsonValue> gltfJson(std::string_view bytes);
 // node's children before its own mesh (its glTF dictionaries fill as they are read). Materials
 // no primitive of that scene names are not imported; Assimp appends a default one after these.
 std::vector<int> assimpMaterialOrder(const JsonValue& document);
+
+// The length of a .glb's BIN chunk (0 when it has none), or nullopt when `bytes` is not a sound
+// glTF 2.0 binary container.
+std::optional<std::uint64_t> glbBinLength(std::string_view bytes);
+
+// Why a glTF file's JSON cannot be handed to Assimp 5.2, or nullopt when its parts fit together.
+// Assimp crashes, where it should refuse, on files that break some of glTF 2.0's rules; these
+// are refused first, each in one line naming the part and what is wrong with it:
+//   - a file that is not glTF 2.0 ("glTF 1.0 is not read: the samples take glTF 2.0");
+//   - buffers, buffer views and accessors (sparse ones too) whose bytes do not lie inside what
+//     they read from ("accessor 3 reads bytes 0-1024 of bufferView 1, which has 512"), misaligned
+//     ones, unknown component types or types, references to parts the file does not have;
+//   - base64 buffers that are not base64, or whose bytes differ from their byteLength;
+//   - skinned meshes without JOINTS_0 and WEIGHTS_0 (or with unpaired or uneven sets), skins
+//     without enough MAT4 float inverseBindMatrices (Assimp 5.2 needs them: glTF does not);
+//   - line loops and strips of fewer than 2 vertices, triangle strips and fans of fewer than 3.
+// Only what Assimp reads is checked: a broken part nothing names (a view no accessor uses) passes,
+// as the file loads today.
+// `glbBinLength` is the BIN chunk's length for a .glb (Assimp reads buffer 0 from it), nullopt
+// for a .gltf, whose buffers are as long as their byteLength says (Assimp checks that).
+std::optional<std::string> gltfStructureError(const JsonValue& document,
+                                              std::optional<std::uint64_t> glbBinLength);
 
 // KHR_texture_transform's `texCoord` of a textureInfo object (it overrides the textureInfo's
 // own; Assimp 5.2 ignores it), or nullopt when the transform does not set one.

@@ -30,6 +30,9 @@ bool startsWith(const std::vector<std::uint8_t>& bytes, std::initializer_list<st
 bool isPng(const std::vector<std::uint8_t>& bytes) {
     return startsWith(bytes, {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'});
 }
+bool isJpeg(const std::vector<std::uint8_t>& bytes) {
+    return startsWith(bytes, {0xff, 0xd8, 0xff});
+}
 
 // stb_image's failure codes ("outofdata", "bad zlib header", ...) in words a user understands.
 std::string decodeFailure(const std::vector<std::uint8_t>& bytes) {
@@ -39,7 +42,7 @@ std::string decodeFailure(const std::vector<std::uint8_t>& bytes) {
     if (code == "0-pixel image" || code == "0 width" || code == "invalid width")
         return "the image has no pixels";
     const bool png = isPng(bytes);
-    const bool jpeg = startsWith(bytes, {0xff, 0xd8, 0xff});
+    const bool jpeg = isJpeg(bytes);
     if (png) {
         if (code == "1/2/4/8/16-bit only") return "unsupported PNG bit depth";
         return "truncated or damaged PNG data";
@@ -76,6 +79,21 @@ void refuseImpossiblePng(const std::vector<std::uint8_t>& bytes, const std::stri
         throw Error(what + ": damaged PNG header (it claims " + claimed + " pixels, more than " +
                     std::to_string(bytes.size()) + " bytes of PNG can hold)");
     }
+    // Each chunk up to IEND must hold the bytes its length claims: stb grows its buffer of
+    // compressed data to what an IDAT chunk claims before reading it (a 528-byte file claiming
+    // 1.4 GB asked for that). stb fails on such a chunk anyway, after the allocation.
+    for (size_t at = 8; bytes.size() - at >= 8;) {
+        const std::uint64_t length = std::uint64_t(get32(at));
+        if (length > bytes.size() - at - 8) {
+            throw Error(what + ": truncated or damaged PNG data (a chunk at byte " +
+                        std::to_string(at) + " claims " + std::to_string(length) + " bytes, " +
+                        std::to_string(bytes.size() - at - 8) + " are left)");
+        }
+        const auto type = bytes.begin() + std::ptrdiff_t(at + 4);
+        if (std::equal(type, type + 4, "IEND")) break;
+        at += 12 + length;  // length, type, data, CRC
+        if (at > bytes.size()) break;
+    }
 }
 
 }  // namespace
@@ -95,13 +113,27 @@ Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& wha
     if (bytes.empty()) throw Error(what + ": empty image");
     if (bytes.size() > size_t(std::numeric_limits<int>::max()))
         throw Error(what + ": image file too large");
+    // PNG and JPEG only, the formats of texture sets and of glTF's images: stb's other readers
+    // allocate for any size their header claims before the data is there, and its Radiance
+    // reader loops forever on a truncated file (the suite reads .hdr files itself, decodeHdr).
+    if (!isPng(bytes) && !isJpeg(bytes)) throw Error(what + ": not a PNG or JPEG image");
     int width = 0, height = 0, channels = 0;
+    const bool known =
+        stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels);
     // A damaged header may claim any size: refuse more than 2^28 pixels (16384^2) before stb
     // allocates for them.
-    if (stbi_info_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels) &&
-        double(width) * double(height) > double(1 << 28)) {
+    if (known && double(width) * double(height) > double(1 << 28)) {
         throw Error(what + ": image too large (" + std::to_string(width) + " x " +
                     std::to_string(height) + " pixels)");
+    }
+    // A JPEG codes each 8 x 8 block of its fullest component in one bit at the least (its DC
+    // scan), so N bytes hold at most 512 N pixels: a header claiming more is damaged, refused
+    // before stb allocates for it (stb reads missing data as zeros: a 140-byte file claiming
+    // 16384 x 16384 decoded to 268 MB of grey pixels).
+    if (known && isJpeg(bytes) && double(width) * double(height) > 512.0 * double(bytes.size())) {
+        throw Error(what + ": damaged JPEG header (it claims " + std::to_string(width) + " x " +
+                    std::to_string(height) + " pixels, more than " + std::to_string(bytes.size()) +
+                    " bytes of JPEG can hold)");
     }
     refuseImpossiblePng(bytes, what);
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
@@ -109,6 +141,8 @@ Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& wha
                               wantChannels),
         stbi_image_free);
     if (!data) throw Error(what + ": " + decodeFailure(bytes));
+    // a promise kept whatever stb does (its PNM reader, no longer reached, made 0 x 0 pictures)
+    if (width < 1 || height < 1) throw Error(what + ": the image has no pixels");
     Image image{width, height, wantChannels ? wantChannels : channels, {}};
     image.pixels.assign(data.get(),
                         data.get() + size_t(width) * size_t(height) * size_t(image.channels));

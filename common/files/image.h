@@ -22,8 +22,8 @@ struct Image {
     }
 };
 
-// Reads a PNG (or any format stb_image decodes) as 8-bit; channels = what the file has, or
-// `wantChannels` when non-zero. Throws Error("<path>: <reason>").
+// Reads a PNG or JPEG as 8-bit; channels = what the file has, or `wantChannels` when non-zero.
+// Throws Error("<path>: <reason>"), also for any other format.
 Image readImage(const std::filesystem::path& path, int wantChannels = 0);
 // Decodes an image file's bytes held in memory; `what` names it in the error.
 Image decodeImage(const std::vector<std::uint8_t>& bytes, const std::string& what,

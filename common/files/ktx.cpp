@@ -222,6 +222,19 @@ KtxImage decodeKtx(std::string_view bytes, const std::string& name) {
     return image;
 }
 
+std::optional<std::string> ktxShapeError(const KtxImage& image, bool cube) {
+    if (!cube) {
+        if (image.faces != 1) return "a cube map where a 2D texture was expected";
+        return std::nullopt;
+    }
+    if (image.faces != 6 || image.width != image.height || image.width < 1)
+        return "not a cube map of square faces";
+    if (image.format == KtxFormat::RG16F) return "a cube map must be RGB or RGBA";
+    const int expectedLevels = int(std::floor(std::log2(double(image.width)))) + 1;
+    if (image.levels > expectedLevels) return "more mip levels than the size allows";
+    return std::nullopt;
+}
+
 std::uint16_t floatToHalf(float value) {
     std::uint32_t bits;
     std::memcpy(&bits, &value, 4);

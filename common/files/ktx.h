@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,6 +38,12 @@ void writeKtx(const std::filesystem::path& path, const KtxImage& image);
 KtxImage readKtx(const std::filesystem::path& path);
 // The same from a file's bytes; `name` is what the error messages call it.
 KtxImage decodeKtx(std::string_view bytes, const std::string& name);
+
+// Why `image` cannot become a float texture on the GPU, or nullopt when it can: a 2D texture
+// (`cube` false) takes one face; a cube map (`cube` true) six square faces, RGB or RGBA, and no
+// more mip levels than its size has. Texture2D::fromKtx and TextureCube::fromKtx throw this
+// reason; the IBL cache asks it of a file before it uploads one.
+std::optional<std::string> ktxShapeError(const KtxImage& image, bool cube);
 
 // IEEE 754 half precision, for RG16F / RGBA16F data.
 std::uint16_t floatToHalf(float value);

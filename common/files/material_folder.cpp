@@ -105,12 +105,19 @@ MaterialFiles findMaterialFiles(const fs::path& dir) {
         throw Error(displayPath(dir) + ": " +
                     (fs::exists(dir, ec) ? "not a folder" : "no such folder"));
     }
-    std::map<std::string, std::vector<fs::path>> found;
+    std::vector<fs::path> names;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
-        if (!entry.is_regular_file(ec)) continue;
-        if (const auto map = materialMapOf(entry.path())) found[*map].push_back(entry.path());
+        if (entry.is_regular_file(ec)) names.push_back(entry.path().filename());
     }
     if (ec) throw Error(displayPath(dir) + ": cannot list the folder: " + ec.message());
+    return materialFilesOf(dir, names);
+}
+
+MaterialFiles materialFilesOf(const fs::path& dir, const std::vector<fs::path>& names) {
+    std::map<std::string, std::vector<fs::path>> found;
+    for (const fs::path& name : names) {
+        if (const auto map = materialMapOf(name)) found[*map].push_back(dir / name);
+    }
 
     auto one = [&](const char* map, bool required) -> std::optional<fs::path> {
         std::vector<fs::path>& files = found[map];

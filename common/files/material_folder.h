@@ -39,5 +39,10 @@ std::optional<std::string> materialMapOf(const std::filesystem::path& file);
 // The maps of `dir`. Throws Error naming the folder or file and the reason: no such folder, a
 // required map missing (saying which names were looked for), two files for one map.
 MaterialFiles findMaterialFiles(const std::filesystem::path& dir);
+// The choice findMaterialFiles makes once it has listed the folder: the maps among `names` (the
+// names of the regular files in `dir`, in any order), each returned as dir / name. The same
+// errors, naming `dir`, except the folder's own (none is read).
+MaterialFiles materialFilesOf(const std::filesystem::path& dir,
+                              const std::vector<std::filesystem::path>& names);
 
 }  // namespace pbr

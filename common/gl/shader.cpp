@@ -96,6 +96,13 @@ struct Preprocessor {
         int number = 0;
         while (std::getline(lines, line)) {
             ++number;
+            // Line kLinesPerFile would be numbered as line 0 of the next file.
+            if (number >= kLinesPerFile) {
+                throw Error(displayPath(file) + ":" + std::to_string(number) + ": more than " +
+                            std::to_string(kLinesPerFile - 1) +
+                            " lines: the compiler's messages could not lead back to them (split "
+                            "the file with #include)");
+            }
             const std::optional<std::string> argument = includeArgument(line);
             if (!argument) {
                 out.text += line;

@@ -25,7 +25,8 @@ struct ShaderSource {
 
 // Expands #include directives (each file once, cycles refused) and numbers the lines so that a
 // compiler message leads back to the file. Pure: no GL.
-// Throws Error("<file>:<line>: <reason>") for a missing include, a cycle or a bad directive.
+// Throws Error("<file>:<line>: <reason>") for a missing include, a cycle, a bad directive or a
+// file of more than 9999 lines (line 10000 would be numbered as the next file's).
 ShaderSource preprocessShader(const std::filesystem::path& file,
                               const std::filesystem::path& includeDir);
 

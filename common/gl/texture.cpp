@@ -242,7 +242,7 @@ KtxImage Texture2D::toKtx(KtxFormat format) const {
 }
 
 Texture2D Texture2D::fromKtx(const KtxImage& image) {
-    if (image.faces != 1) throw Error("a cube map where a 2D texture was expected");
+    if (const auto problem = ktxShapeError(image, false)) throw Error(*problem);
     const GlPixelFormat gl = glPixelFormat(image.format);
     Texture2D texture(image.width, image.height, gl.internalFormat);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -269,12 +269,7 @@ KtxImage TextureCube::toKtx() const {
 }
 
 TextureCube TextureCube::fromKtx(const KtxImage& image) {
-    if (image.faces != 6 || image.width != image.height) {
-        throw Error("not a cube map of square faces");
-    }
-    if (image.format == KtxFormat::RG16F) throw Error("a cube map must be RGB or RGBA");
-    const int expectedLevels = int(std::floor(std::log2(double(image.width)))) + 1;
-    if (image.levels > expectedLevels) throw Error("more mip levels than the size allows");
+    if (const auto problem = ktxShapeError(image, true)) throw Error(*problem);
     const GlPixelFormat gl = glPixelFormat(image.format);
     TextureCube cube(image.width, image.levels,
                      image.format == KtxFormat::RGBA32F ? kFloatRgb : kHalfFloatRgb);

@@ -50,7 +50,7 @@ struct Reader {
         if (!name.empty() && name[0] == '*') {
             const int index = std::atoi(name.c_str() + 1);
             if (index < 0 || index >= int(scene->mNumTextures)) {
-                throw Error(where + "texture '" + name + "' is not in the file");
+                throw Error(where + "texture '" + printable(name) + "' is not in the file");
             }
             ref.embedded = index;
             return ref;
@@ -64,7 +64,8 @@ struct Reader {
         ref.file = model.file.parent_path() / name;
         std::error_code ec;
         if (!fs::is_regular_file(ref.file, ec)) {
-            throw Error(where + "texture '" + name + "' not found (" + displayPath(ref.file) + ")");
+            throw Error(where + "texture '" + printable(name) + "' not found (" +
+                        printable(displayPath(ref.file)) + ")");
         }
         return ref;
     }
@@ -157,7 +158,7 @@ struct Reader {
     }
 
     MeshData mesh(const aiMesh* in) {
-        const std::string what = where + "mesh '" + in->mName.C_Str() + "': ";
+        const std::string what = where + "mesh '" + printable(in->mName.C_Str()) + "': ";
         MeshData out;
         const unsigned n = in->mNumVertices;
         if (!in->mVertices || n == 0) throw Error(what + "no vertices");
@@ -324,7 +325,8 @@ std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& w
         if (!std::isfinite(length) || length < 1e-12f ||
             !std::isfinite(glm::dot(light.position, light.position)) ||
             !std::isfinite(glm::dot(light.color, light.color))) {
-            throw Error(where + "light '" + light.name + "' has a broken transform or colour");
+            throw Error(where + "light '" + printable(light.name) +
+                        "' has a broken transform or colour");
         }
         light.direction /= length;
         if (light.type == PunctualLight::Type::Spot) {
@@ -415,8 +417,16 @@ Model loadModel(const fs::path& file) {
         const std::string bytes = readTextFile(file);
         const size_t first = bytes.find_first_not_of(" \t\r\n");
         const bool json = first != std::string::npos && bytes[first] == '{';
+        std::optional<JsonValue> parsed;
         if (bytes.starts_with("glTF") || json || extension == ".gltf") {
             if (const auto problem = gltfContainerError(bytes)) throw Error(where + *problem);
+            // Assimp 5.2 crashes on some glTF files it should refuse (a skin without its
+            // matrices, an accessor past its buffer): those are refused here, saying why.
+            parsed = gltfJson(bytes);
+            if (parsed) {
+                if (const auto problem = gltfStructureError(*parsed, glbBinLength(bytes)))
+                    throw Error(where + *problem);
+            }
         } else if (extension == ".glb") {
             throw Error(where + "not a binary glTF file (it does not start with 'glTF')");
         }
@@ -425,7 +435,7 @@ Model loadModel(const fs::path& file) {
             GltfExtensions extensions = gltfExtensions(bytes);
             extensionsUsed = std::move(extensions.used);
             extensionsRequired = std::move(extensions.required);
-            document = gltfJson(bytes);
+            document = std::move(parsed);
         }
     }
 
@@ -445,7 +455,9 @@ Model loadModel(const fs::path& file) {
         std::string reason = importer.GetErrorString();
         while (!reason.empty() && (reason.back() == '\n' || reason.back() == ' '))
             reason.pop_back();
-        throw Error(where + "cannot load (" + (reason.empty() ? "unknown reason" : reason) + ")");
+        // Assimp's reason may quote the file (a base64 text, a name): one line whatever it holds
+        throw Error(where + "cannot load (" +
+                    (reason.empty() ? "unknown reason" : printable(reason)) + ")");
     }
     if (!scene->mRootNode || scene->mNumMeshes == 0) {
         throw Error(

@@ -1,5 +1,6 @@
 #include "gltf/model_pack.h"
 
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <type_traits>
@@ -109,6 +110,20 @@ TextureRef readTexture(In& in, size_t images) {
     return ref;
 }
 
+// Every component finite: what loadModel promises of positions, normals, transforms, bounds
+// and lights, and a pack stands for what it made.
+template <typename V>
+bool finite(const V& v) {
+    for (int i = 0; i < V::length(); ++i) {
+        if constexpr (std::is_floating_point_v<std::decay_t<decltype(v[i])>>) {
+            if (!std::isfinite(v[i])) return false;
+        } else if (!finite(v[i])) {
+            return false;
+        }
+    }
+    return true;
+}
+
 // The texture slots of a material, in the order the pack keeps them.
 template <typename M>
 auto textureSlots(M& m) {
@@ -213,6 +228,7 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
     model.primitivesWithoutMaterial = int(in.u32());
     model.boundsMin = in.value<glm::vec3>();
     model.boundsMax = in.value<glm::vec3>();
+    if (!finite(model.boundsMin) || !finite(model.boundsMax)) in.fail("non-finite bounds");
     model.lights.resize(in.count(4));
     for (PunctualLight& light : model.lights) {
         const std::uint32_t type = in.u32();
@@ -225,6 +241,10 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
         light.range = in.value<float>();
         light.innerConeAngle = in.value<float>();
         light.outerConeAngle = in.value<float>();
+        if (!finite(light.color) || !finite(light.position) || !finite(light.direction)) {
+            in.fail("light '" + printable(light.name) +
+                    "' has a non-finite colour, place or direction");
+        }
     }
     model.embeddedImages.resize(in.count(4));
     for (EmbeddedImage& image : model.embeddedImages) {
@@ -233,8 +253,10 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
         image.height = in.value<std::int32_t>();
         image.bytes = in.array<std::uint8_t>();
         if (image.width > 0 &&
-            image.bytes.size() != size_t(image.width) * size_t(image.height) * 4)
-            in.fail("embedded image '" + image.name + "' is not width x height RGBA texels");
+            image.bytes.size() != size_t(image.width) * size_t(image.height) * 4) {
+            in.fail("embedded image '" + printable(image.name) +
+                    "' is not width x height RGBA texels");
+        }
     }
     model.materials.resize(in.count(4));
     for (Material& m : model.materials) {
@@ -260,6 +282,7 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
         p.material = int(in.u32());
         if (size_t(p.material) >= model.materials.size()) in.fail("material index out of range");
         p.transform = in.value<glm::mat4>();
+        if (!finite(p.transform)) in.fail("a non-finite node transform");
         const std::uint32_t primitive = in.u32();
         if (primitive > 1) in.fail("unknown primitive type");
         p.mesh.primitive = Primitive(primitive);
@@ -277,6 +300,11 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
         }
         for (const std::uint32_t index : p.mesh.indices) {
             if (index >= n) in.fail("vertex index out of range");
+        }
+        for (const auto* vectors : {&p.mesh.positions, &p.mesh.normals}) {
+            for (const glm::vec3& v : *vectors) {
+                if (!finite(v)) in.fail("a non-finite vertex position or normal");
+            }
         }
     }
     if (in.at != bytes.size()) in.fail("bytes after the model (not a model pack of this layout)");

@@ -198,7 +198,8 @@ TextureCube IblCache::cube(const MapFile& file, const std::function<TextureCube(
 std::optional<Texture2D> IblCache::loadTexture(const fs::path& path, const MapFile& file,
                                                KtxFormat format) {
     if (std::optional<KtxImage> image = load(path, file.bakedKey)) {
-        if (image->format == format && image->faces == 1) return Texture2D::fromKtx(*image);
+        if (image->format == format && !ktxShapeError(*image, false))
+            return Texture2D::fromKtx(*image);
         std::fprintf(stderr, "note: %s: not the expected format; not used\n",
                      displayPath(path).c_str());
     }

@@ -8,6 +8,7 @@
 
 #include "base/error.h"
 #include "base/output.h"
+#include "base/paths.h"
 #include "support/process.h"
 
 namespace pbr {
@@ -108,3 +109,19 @@ TEST(Output, PathChecksBeforeRendering) {
 
 }  // namespace
 }  // namespace pbr
+
+// Every reader takes its bytes through readTextFile: a folder or a device (which has no end to
+// read to: /dev/zero ran a shader include out of memory) is one line naming it, not a read.
+TEST(Paths, ReadTextFileTakesFilesOnly) {
+    for (const auto& [path, reason] :
+         std::vector<std::pair<std::string, std::string>>{{"/dev/zero", ": not a file"},
+                                                          {"/tmp", ": is a directory"}}) {
+        try {
+            (void)pbr::readTextFile(path);
+            ADD_FAILURE() << path << " was read";
+        } catch (const pbr::Error& e) {
+            EXPECT_EQ(std::string(e.what()).rfind(path + reason, 0), 0u) << e.what();
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+        }
+    }
+}

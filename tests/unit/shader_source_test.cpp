@@ -91,6 +91,17 @@ TEST_F(ShaderSourceTest, MissingFileIsNamed) {
     EXPECT_NE(messageOf("sample/none.frag").find("none.frag: cannot open"), std::string::npos);
 }
 
+// Line 10000 of a file would carry the number of line 0 of the next one (a promise the
+// shader_source fuzz target checks; its input: tests/fuzz/regressions/shader_source).
+TEST_F(ShaderSourceTest, FileOfMoreThan9999LinesIsRefused) {
+    const std::string lines = "#version 330 core\n" + std::string(9998, '\n');  // 9999 lines
+    write("sample/main.frag", lines);
+    EXPECT_NO_THROW(preprocessShader(dir_ / "sample/main.frag", dir_ / "include"));
+    write("sample/main.frag", lines + "x\n");
+    const std::string message = messageOf("sample/main.frag");
+    EXPECT_NE(message.find("main.frag:10000: more than 9999 lines"), std::string::npos) << message;
+}
+
 TEST(ShaderLog, MesaAndNvidiaMessagesMapToFileAndLine) {
     const std::vector<fs::path> files = {"/s/main.frag", "/s/include/brdf.glsl"};
     const auto mesa = mapShaderLog(

@@ -1,0 +1,34 @@
+// PBR_PANEL_SCRIPT (app/panel_script.h): any text either gives a frame for each of its lines,
+// the mouse at a finite place within reach of the picture or absent, or is refused in one line
+// naming the script and the line.
+#include "app/panel_script.h"
+#include "fuzz_check.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
+    using namespace pbr;
+    const std::string name = "fuzz.script";
+    const std::string_view text = fuzz::bytesOf(data, size);
+    std::vector<InputFrame> frames;
+    try {
+        frames = parsePanelScript(text, name);
+    } catch (const Error& e) {
+        fuzz::expectOneLine(e.what(), name + ":");
+        return 0;
+    } catch (const std::exception& e) {
+        fuzz::finding(std::string("not an Error but ") + fuzz::typeName(typeid(e)) + ": " +
+                      e.what());
+    }
+    fuzz::expect(frames.size() == fuzz::split(text, '\n').size(), "a frame a line");
+    for (const InputFrame& frame : frames) {
+        // "-" is the cursor at (-1, -1), unknown
+        for (const float v : {frame.cursor.x, frame.cursor.y}) {
+            fuzz::expect(std::isfinite(v) && std::abs(v) <= kMaxScriptCursor,
+                         "the cursor finite, within reach of the picture");
+        }
+        // What the App makes of two frames: the move between them is finite.
+        fuzz::expect(std::isfinite(frame.cursor.x - frames.front().cursor.x) &&
+                         std::isfinite(frame.cursor.y - frames.front().cursor.y),
+                     "a finite move from frame to frame");
+    }
+    return 0;
+}

@@ -1,0 +1,3 @@
+#version 330 core
+#include "/dev/zero"
+void main() {}
