@@ -5,7 +5,8 @@
 #   ./build.sh test          install what is missing, build, run every test through ctest: in the
 #                            Release build (the web samples in headless Chromium included), then
 #                            in the AddressSanitizer + UBSan build those that run every line of
-#                            ours (tests/sanitizers/release_only.txt names the others)
+#                            ours (tests/sanitizers/release_only.txt names the others), then the
+#                            fuzz targets of our readers (clang's libFuzzer, tests/fuzz)
 # and one more:
 #   ./build.sh web           install what is missing, build the samples for the browser into
 #                            build/web (open build/web/index.html)
@@ -17,7 +18,8 @@ usage: ./build.sh run [sample flags]   install what is missing, build, run sampl
                                        when there is a display, else an offscreen PNG and its path
        ./build.sh test                 install what is missing, build, run every test (Release,
                                        the web samples in headless Chromium), then under
-                                       AddressSanitizer + UBSan those that run every line of ours
+                                       AddressSanitizer + UBSan those that run every line of ours,
+                                       then each fuzz target for a bounded number of inputs
        ./build.sh web                  install what is missing (emscripten, Chromium), build the
                                        web samples into build/web: open build/web/index.html
        ./build.sh -h | --help          this help
@@ -48,6 +50,9 @@ OPTIONAL_PACKAGES=(libosmesa6-dev)
 # The web build and its tests: emscripten (its GLFW and libc++ are built in; nothing is
 # downloaded) and a headless Chromium with a software WebGL 2 (SwiftShader). About 1.1 GB.
 WEB_PACKAGES=(emscripten chromium-headless-shell)
+# The fuzz targets of our readers (tests/fuzz, the fuzz preset): Debian's clang with libFuzzer and
+# the sanitizers' runtime. About 50 MB to download.
+FUZZ_PACKAGES=(clang-19 libfuzzer-19-dev libclang-rt-19-dev)
 
 is_installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 
@@ -111,6 +116,30 @@ install_web() {
         return 1
     fi
     echo "build.sh: installing ${missing[*]} (the web build)" >&2
+    if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
+        "${APT[@]}" update -q || true
+        if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
+            echo "build.sh: could not install: ${missing[*]}" >&2
+            return 1
+        fi
+    fi
+}
+
+# The fuzz build's packages (see FUZZ_PACKAGES). Returns 1, saying why, where they cannot be had.
+install_fuzz() {
+    if ! command -v dpkg-query >/dev/null 2>&1; then
+        command -v clang++-19 >/dev/null 2>&1 && return 0
+        echo "build.sh: not a Debian system and no clang++-19 on PATH: no fuzz build" >&2
+        return 1
+    fi
+    local missing=() p
+    for p in "${FUZZ_PACKAGES[@]}"; do is_installed "$p" || missing+=("$p"); done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    if ! apt_command; then
+        echo "build.sh: not root and no sudo; as root run: apt-get install --no-install-recommends ${missing[*]}" >&2
+        return 1
+    fi
+    echo "build.sh: installing ${missing[*]} (the fuzz build)" >&2
     if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
         "${APT[@]}" update -q || true
         if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
@@ -231,19 +260,23 @@ case "${1:-}" in
     test)
         timed "install" install_missing
         timed "glTF validator" install_gltf_validator
-        # The web packages download and unpack (disk and network) while the Release build
-        # compiles (the cores); their output is shown when the install fails.
+        # The web and fuzz packages download and unpack (disk and network) while the Release
+        # build compiles (the cores); their output is shown when an install fails. One after the
+        # other: apt takes one install at a time.
         mkdir -p build
-        install_web >build/web-install.log 2>&1 &
-        web_install_pid=$!
+        { if install_web >build/web-install.log 2>&1; then echo 0; else echo 1; fi \
+              >build/web-install.status
+          install_fuzz >build/fuzz-install.log 2>&1; } &
+        install_pid=$!
         timed "Release build" build default
         # The web tests are skipped, saying so, only where the web build cannot be made at all;
         # on Debian a failed install fails the command (CI never skips them).
-        web_status=0
+        fuzz_status=0
         start=$SECONDS
-        wait "$web_install_pid" || web_status=$?
+        wait "$install_pid" || fuzz_status=$?
+        web_status=$(cat build/web-install.status)
         [ "$web_status" -eq 0 ] || cat build/web-install.log >&2
-        stage_times+=" web install (its wait after the build) $((SECONDS - start)),"
+        stage_times+=" web and fuzz install (its wait after the build) $((SECONDS - start)),"
         if [ "$web_status" -eq 0 ]; then
             timed "web build" build_web
         elif command -v dpkg-query >/dev/null 2>&1; then
@@ -258,6 +291,19 @@ case "${1:-}" in
         timed "sanitizer build" build asan
         timed "sanitizer tests" ctest --preset asan -j "$(nproc)"
         cd "$repo_dir"
+        # Each fuzz target of our readers (clang, libFuzzer, ASan + UBSan): the kept inputs, then
+        # a bounded number of new ones from a fixed seed (tests/fuzz/CMakeLists.txt). Skipped,
+        # saying so, only where clang cannot be had at all; on Debian a failed install fails.
+        if [ "$fuzz_status" -eq 0 ]; then
+            timed "fuzz build" build fuzz
+            timed "fuzz tests" ctest --preset fuzz -j "$(nproc)"
+        elif command -v dpkg-query >/dev/null 2>&1; then
+            cat build/fuzz-install.log >&2
+            exit 1
+        else
+            cat build/fuzz-install.log >&2
+            echo "build.sh: no fuzz build here: the fuzz tests are skipped" >&2
+        fi
         timed "windowed-only build" check_windowed_build
         echo "build.sh: all tests passed; seconds taken:${stage_times%,}" >&2
         ;;
