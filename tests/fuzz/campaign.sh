@@ -50,7 +50,7 @@ for dir in "$source_dir/regressions/$target" "$source_dir/seeds/$target" "$build
     [[ -d $dir ]] && inputs+=("$dir")
 done
 if [[ $target == model ]]; then  # Assimp's own leaks (lsan_assimp.supp)
-    export LSAN_OPTIONS="suppressions=$source_dir/lsan_assimp.supp:print_suppressions=0"
+    export LSAN_OPTIONS="suppressions='$source_dir/lsan_assimp.supp':print_suppressions=0"
 fi
 
 # With several jobs libFuzzer writes one log a job (fuzz-N.log) in the folder it runs in; one
