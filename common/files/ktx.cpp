@@ -192,6 +192,9 @@ KtxImage decodeKtx(std::string_view bytes, const std::string& name) {
     need(keyValueBytes);
     const size_t keyValueEnd = at + keyValueBytes;
     while (at < keyValueEnd) {
+        // a pair's size field lies inside the block too (reading it past the end wrapped
+        // keyValueEnd - at: the fuzz build's unsigned-overflow check found it)
+        if (keyValueEnd - at < 4) throw Error(where + "bad KTX key/value data");
         const std::uint32_t size = get32();
         if (size > keyValueEnd - at) throw Error(where + "bad KTX key/value data");
         const std::string pair(bytes.substr(at, size));

@@ -252,6 +252,14 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
         image.width = in.value<std::int32_t>();
         image.height = in.value<std::int32_t>();
         image.bytes = in.array<std::uint8_t>();
+        // sizes checked before they multiply (a negative height wrapped the product, which
+        // a crafted pack could make equal its byte count: the fuzz build's unsigned-overflow
+        // check found it); at most 2^28 texels, as decodeImage takes
+        if (image.width < 0 || image.height < 0 ||
+            std::uint64_t(image.width) * std::uint64_t(image.height) > (std::uint64_t(1) << 28)) {
+            in.fail("embedded image '" + printable(image.name) + "' has a size of " +
+                    std::to_string(image.width) + " x " + std::to_string(image.height));
+        }
         if (image.width > 0 &&
             image.bytes.size() != size_t(image.width) * size_t(image.height) * 4) {
             in.fail("embedded image '" + printable(image.name) +
