@@ -33,7 +33,7 @@ targets=("$@")
 
 cmake --preset asan -B "$build" -DCMAKE_UNITY_BUILD=OFF -DCMAKE_DISABLE_PRECOMPILE_HEADERS=ON \
       -DCMAKE_C_FLAGS=--coverage -DCMAKE_CXX_FLAGS=--coverage \
-      -DCMAKE_EXE_LINKER_FLAGS=--coverage >/dev/null
+      -DCMAKE_EXE_LINKER_FLAGS=--coverage -DPBR_FUZZ_REPLAY=ON >/dev/null
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]/#/fuzz_replay_}" >/dev/null
 
 export ASAN_OPTIONS=detect_leaks=0  # what is counted here is lines; the fuzz build finds leaks
