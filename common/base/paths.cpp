@@ -85,6 +85,10 @@ std::string utf8Path(const fs::path& path) {
     return std::string(text.begin(), text.end());
 }
 
+fs::path pathFromUtf8(std::string_view text) {
+    return fs::path(std::u8string(text.begin(), text.end()));
+}
+
 std::string readTextFile(const fs::path& path) {
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace pbr {
@@ -33,6 +34,8 @@ std::vector<EnvironmentVariable> environmentVariables();
 std::string displayPath(const std::filesystem::path& path);
 // The path in UTF-8, as libraries that take a char path (Assimp) expect on every platform.
 std::string utf8Path(const std::filesystem::path& path);
+// A path from UTF-8 text (a glTF file's uri, a flag), on every platform.
+std::filesystem::path pathFromUtf8(std::string_view text);
 // The whole file as a string; throws Error("<path>: <reason>").
 std::string readTextFile(const std::filesystem::path& path);
 

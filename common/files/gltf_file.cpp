@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <map>
 #include <set>
 
 #include "base/error.h"
@@ -396,12 +397,18 @@ std::optional<std::string> gltfContainerError(std::string_view bytes) {
     return jsonSyntaxError(bytes);
 }
 
-std::optional<std::uint64_t> glbBinLength(std::string_view bytes) {
+std::optional<std::string_view> glbBin(std::string_view bytes) {
     if (bytes.substr(0, 4) != "glTF" || glbError(bytes) || read32(bytes, 4) != 2)
         return std::nullopt;
     const size_t bin = 20 + size_t(read32(bytes, 12));  // the chunk after the JSON chunk
-    if (bytes.size() - bin < 8) return 0;
-    return read32(bytes, bin);
+    if (bytes.size() - bin < 8) return std::string_view();
+    return bytes.substr(bin + 8, read32(bytes, bin));  // glbError: the chunk lies in the file
+}
+
+std::optional<std::uint64_t> glbBinLength(std::string_view bytes) {
+    const std::optional<std::string_view> bin = glbBin(bytes);
+    if (!bin) return std::nullopt;
+    return bin->size();
 }
 
 namespace {
@@ -409,6 +416,9 @@ namespace {
 // JSON numbers are exact whole numbers below 2^53: larger sizes and counts are refused, so that
 // the sums below fit in 64 bits (at most 2^53 * 252 + 2^54).
 constexpr std::uint64_t kLargestWhole = std::uint64_t(1) << 53;
+
+constexpr std::string_view kBase64Digits =
+    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
 
 std::string numberText(double value) {
     char text[32];
@@ -500,8 +510,9 @@ struct Part {
 // keeps the first reason found and returns false.
 class StructureChecker {
 public:
-    StructureChecker(const JsonValue& document, std::optional<std::uint64_t> binLength)
-        : document_(document), binLength_(binLength) {}
+    StructureChecker(const JsonValue& document, std::optional<std::uint64_t> binLength,
+                     const GltfBufferBytes& bufferBytes)
+        : document_(document), binLength_(binLength), bufferBytes_(bufferBytes) {}
 
     std::optional<std::string> check() {
         if (!version() || !list("buffers", buffers_) || !list("bufferViews", views_) ||
@@ -520,6 +531,9 @@ private:
     struct Accessor {
         std::uint64_t count, componentType;
         std::string type;
+        int view = -1;             // none: its elements are zeros
+        std::uint64_t offset = 0;  // in its view
+        bool sparse = false;
     };
 
     bool fail(std::string reason) {
@@ -661,24 +675,27 @@ private:
         return true;
     }
 
+    // Whether a data URI's text before its comma says base64: Assimp 5.2 takes it so when a
+    // parameter after the media type starts with "base64".
+    static bool isBase64(std::string_view head) {
+        for (size_t at = head.find(';'); at != std::string_view::npos; at = head.find(';', at + 1))
+            if (head.substr(at + 1).starts_with("base64")) return true;
+        return false;
+    }
+
     // A data URI's base64 text: Assimp 5.2 decodes only characters below 0x80 (it leaks the
     // buffer when it meets another) and throws on a length that is not a multiple of 4.
     bool base64(const Part& part, std::string_view uri, std::uint64_t length) {
         const size_t comma = uri.find(',');
         if (comma == std::string_view::npos) return true;  // not data: Assimp's to judge
-        // Assimp takes the data as base64 when a parameter after the media type starts so.
-        bool encoded = false;
-        for (size_t at = uri.find(';'); at < comma; at = uri.find(';', at + 1))
-            encoded = encoded || uri.substr(at + 1).starts_with("base64");
-        if (!encoded) return true;
+        if (!isBase64(uri.substr(0, comma))) return true;
         const std::string_view text = uri.substr(comma + 1);
         const std::string what = part.name + "'s base64 data";
         if (text.size() % 4 != 0) {
             return fail(what + " is " + std::to_string(text.size()) +
                         " characters, not a multiple of 4");
         }
-        const size_t bad = text.find_first_not_of(
-            "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/");
+        const size_t bad = text.find_first_not_of(kBase64Digits);
         size_t padding = 0;
         if (bad != std::string_view::npos) {
             padding = text.size() - bad;
@@ -791,7 +808,10 @@ private:
         }
         if (const JsonValue* sparse = accessor->find("sparse")) {
             if (!sparseValues(*sparse, part, out.count, element)) return false;
+            out.sparse = true;
         }
+        out.view = viewIndex;
+        out.offset = offset;
         known = out;
         return true;
     }
@@ -904,7 +924,73 @@ private:
             return fail(part.name + " is a " + modes[mode] + " of " + std::to_string(count) + what +
                         ", fewer than " + std::to_string(needed));
         }
-        return true;
+        return mode != 2 || indices < 0 || lineLoop(part, indices, position);
+    }
+
+    // Assimp 5.2 drops a line naming a vertex past the primitive's, then closes an indexed line
+    // loop with the first index of its first line, read from that line even when it was dropped:
+    // through a null pointer. So the first two indices must name vertices of the primitive.
+    bool lineLoop(const Part& part, int indices, int position) {
+        if (position < 0)
+            return fail(part.name +
+                        " is a line loop of indices without POSITION: it has no vertices");
+        const Accessor& read = *accessorsRead_[size_t(indices)];
+        if (read.sparse) return true;     // Assimp patches them as it reads them: not read here
+        std::uint64_t first[2] = {0, 0};  // an accessor without a view holds zeros
+        if (read.view >= 0) {
+            const View& view = *viewsRead_[size_t(read.view)];
+            const std::optional<std::string>& bytes = bufferBytes(int(view.buffer));
+            if (!bytes) return true;  // Assimp's to read
+            const std::uint64_t size = componentSize(read.componentType);
+            const std::uint64_t stride = view.stride ? view.stride : size;
+            for (std::uint64_t i = 0; i < 2; ++i) {
+                const std::uint64_t at = view.offset + read.offset + i * stride;
+                if (at + size > bytes->size()) return true;  // Assimp's to judge
+                for (std::uint64_t b = size; b-- > 0;)
+                    first[i] = (first[i] << 8) | std::uint8_t((*bytes)[size_t(at + b)]);
+            }
+        }
+        const std::uint64_t vertices = accessorsRead_[size_t(position)]->count;
+        if (first[0] < vertices && first[1] < vertices) return true;
+        return fail(part.name + " is a line loop whose first line joins vertices " +
+                    std::to_string(first[0]) + " and " + std::to_string(first[1]) +
+                    ", but its POSITION has " + std::to_string(vertices) +
+                    (vertices == 1 ? " vertex" : " vertices"));
+    }
+
+    // The bytes of buffer `index` (its byteLength checked), where they can be had: a data URI's
+    // own, or the caller's (a .glb's BIN chunk, a file beside the .gltf).
+    const std::optional<std::string>& bufferBytes(int index) {
+        const auto [at, added] = bytesRead_.try_emplace(index);
+        if (!added) return at->second;
+        const JsonValue* uri = buffers_->items[size_t(index)].find("uri");
+        const std::string_view text =
+            uri && uri->type == JsonValue::Type::String ? std::string_view(uri->text) : "";
+        if (!(binLength_ && index == 0) && text.starts_with("data:"))
+            at->second = base64Bytes(text);
+        else if (bufferBytes_)
+            at->second = bufferBytes_(size_t(index), text);
+        return at->second;
+    }
+
+    // A data URI's bytes, when base64 (checked by base64() above), else nullopt.
+    static std::optional<std::string> base64Bytes(std::string_view uri) {
+        const size_t comma = uri.find(',');
+        if (comma == std::string_view::npos || !isBase64(uri.substr(0, comma))) return std::nullopt;
+        std::string bytes;
+        std::uint32_t bits = 0;
+        int held = 0;
+        for (const char c : uri.substr(comma + 1)) {
+            const size_t digit = kBase64Digits.find(c);
+            if (digit == std::string_view::npos) break;  // '=' ends it
+            bits = (bits << 6) | std::uint32_t(digit);
+            held += 6;
+            if (held >= 8) {
+                held -= 8;
+                bytes.push_back(char((bits >> held) & 0xFF));
+            }
+        }
+        return bytes;
     }
 
     // Every skin (Assimp 5.2 reads them all): joints that are nodes, and inverseBindMatrices,
@@ -1028,6 +1114,7 @@ private:
 
     const JsonValue& document_;
     const std::optional<std::uint64_t> binLength_;
+    const GltfBufferBytes& bufferBytes_;
     std::string error_;
     const JsonValue *buffers_ = nullptr, *views_ = nullptr, *accessors_ = nullptr,
                     *meshes_ = nullptr, *nodes_ = nullptr, *skins_ = nullptr,
@@ -1037,13 +1124,15 @@ private:
     std::vector<std::optional<View>> viewsRead_;
     std::vector<std::optional<Accessor>> accessorsRead_;
     std::set<int> meshesRead_;
+    std::map<int, std::optional<std::string>> bytesRead_;  // bufferBytes(), by buffer
 };
 
 }  // namespace
 
 std::optional<std::string> gltfStructureError(const JsonValue& document,
-                                              std::optional<std::uint64_t> glbBinLength) {
-    return StructureChecker(document, glbBinLength).check();
+                                              std::optional<std::uint64_t> glbBinLength,
+                                              const GltfBufferBytes& bufferBytes) {
+    return StructureChecker(document, glbBinLength, bufferBytes).check();
 }
 
 }  // namespace pbr

@@ -4,7 +4,9 @@
 // wrong instead: the JSON ends early, or is invalid at a line and column; a .glb's header or
 // chunks do not add up. Then the parts the JSON describes, where Assimp 5.2 would crash on them
 // (gltfStructureError). Pure: no GL, no Assimp.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -49,9 +51,16 @@ std::optional<JsonValue> gltfJson(std::string_view bytes);
 // no primitive of that scene names are not imported; Assimp appends a default one after these.
 std::vector<int> assimpMaterialOrder(const JsonValue& document);
 
-// The length of a .glb's BIN chunk (0 when it has none), or nullopt when `bytes` is not a sound
-// glTF 2.0 binary container.
+// The bytes of a .glb's BIN chunk (empty when it has none), or nullopt when `bytes` is not a
+// sound glTF 2.0 binary container; glbBinLength, their number.
+std::optional<std::string_view> glbBin(std::string_view bytes);
 std::optional<std::uint64_t> glbBinLength(std::string_view bytes);
+
+// The bytes of a buffer that the JSON does not hold itself, buffer `index` of the file, its `uri`
+// ("" when it has none): a .glb's buffer 0 (the BIN chunk), or a file beside the .gltf; nullopt
+// when the caller cannot give them.
+using GltfBufferBytes =
+    std::function<std::optional<std::string>(std::size_t index, std::string_view uri)>;
 
 // Why a glTF file's JSON cannot be handed to Assimp 5.2, or nullopt when its parts fit together.
 // Assimp crashes, where it should refuse, on files that break some of glTF 2.0's rules; these
@@ -63,13 +72,18 @@ std::optional<std::uint64_t> glbBinLength(std::string_view bytes);
 //   - base64 buffers that are not base64, or whose bytes differ from their byteLength;
 //   - skinned meshes without JOINTS_0 and WEIGHTS_0 (or with unpaired or uneven sets), skins
 //     without enough MAT4 float inverseBindMatrices (Assimp 5.2 needs them: glTF does not);
-//   - line loops and strips of fewer than 2 vertices, triangle strips and fans of fewer than 3.
+//   - line loops and strips of fewer than 2 vertices, triangle strips and fans of fewer than 3;
+//   - indexed line loops whose first line names a vertex the primitive does not have (or that
+//     have no POSITION): Assimp drops that line and then closes the loop with its first index,
+//     read through a null pointer. The indices are read where their bytes can be had: a data
+//     URI's, and what `bufferBytes` gives (a .glb's BIN chunk, a file beside the .gltf).
 // Only what Assimp reads is checked: a broken part nothing names (a view no accessor uses) passes,
 // as the file loads today.
 // `glbBinLength` is the BIN chunk's length for a .glb (Assimp reads buffer 0 from it), nullopt
 // for a .gltf, whose buffers are as long as their byteLength says (Assimp checks that).
 std::optional<std::string> gltfStructureError(const JsonValue& document,
-                                              std::optional<std::uint64_t> glbBinLength);
+                                              std::optional<std::uint64_t> glbBinLength,
+                                              const GltfBufferBytes& bufferBytes = {});
 
 // KHR_texture_transform's `texCoord` of a textureInfo object (it overrides the textureInfo's
 // own; Assimp 5.2 ignores it), or nullopt when the transform does not set one.

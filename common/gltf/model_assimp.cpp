@@ -424,7 +424,20 @@ Model loadModel(const fs::path& file) {
             // matrices, an accessor past its buffer): those are refused here, saying why.
             parsed = gltfJson(bytes);
             if (parsed) {
-                if (const auto problem = gltfStructureError(*parsed, glbBinLength(bytes)))
+                const std::optional<std::string_view> bin = glbBin(bytes);
+                const auto bufferBytes = [&](size_t index,
+                                             std::string_view uri) -> std::optional<std::string> {
+                    if (bin && index == 0) return std::string(*bin);
+                    if (uri.empty() || uri.find(':') != std::string_view::npos) return std::nullopt;
+                    try {  // a file beside the .gltf (Assimp says so when it is missing)
+                        return readTextFile(file.parent_path() / pathFromUtf8(uri));
+                    } catch (const Error&) {
+                        return std::nullopt;
+                    }
+                };
+                if (const auto problem = gltfStructureError(
+                        *parsed, bin ? std::optional<std::uint64_t>(bin->size()) : std::nullopt,
+                        bufferBytes))
                     throw Error(where + *problem);
             }
         } else if (extension == ".glb") {

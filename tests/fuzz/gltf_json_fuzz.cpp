@@ -52,7 +52,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
         return 0;
     }
     fuzz::visit(*document, 0);
-    if (const std::optional<std::string> error = gltfStructureError(*document, glbBinLength(bytes)))
+    const std::optional<std::string_view> bin = glbBin(bytes);
+    const auto binBytes = [&](size_t index, std::string_view) -> std::optional<std::string> {
+        if (bin && index == 0) return std::string(*bin);
+        return std::nullopt;
+    };
+    if (const std::optional<std::string> error = gltfStructureError(
+            *document, bin ? std::optional<std::uint64_t>(bin->size()) : std::nullopt, binBytes))
         fuzz::expectOneLine(*error, "");
     const std::vector<int> order = assimpMaterialOrder(*document);
     std::vector<bool> seen(fuzz::countOf(*document, "materials"), false);

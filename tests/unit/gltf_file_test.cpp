@@ -83,14 +83,14 @@ TEST(GltfFile, GlbDamage) {
 
 // The structure check of a .gltf's JSON (with `binLength`: a .glb's, whose BIN chunk has that
 // many bytes): its reason, or "" when the file passes.
-std::string structure(std::string_view json,
-                      std::optional<std::uint64_t> binLength = std::nullopt) {
+std::string structure(std::string_view json, std::optional<std::uint64_t> binLength = std::nullopt,
+                      const GltfBufferBytes& bufferBytes = {}) {
     const std::optional<JsonValue> document = parseJson(json);
     if (!document) {
         ADD_FAILURE() << "not JSON: " << json;
         return "not JSON";
     }
-    return gltfStructureError(*document, binLength).value_or("");
+    return gltfStructureError(*document, binLength, bufferBytes).value_or("");
 }
 
 // `text` with its one `from` replaced by `to`.
@@ -182,18 +182,31 @@ TEST(GltfStructure, SoundFilesPass) {
 // Assimp refuses itself (a missing .bin, a recursive node, a wrong type, indices out of range).
 TEST(GltfStructure, DebiansCorpusPasses) {
     PBR_NEED_ASSIMP_MODELS(kGltf);
-    int files = 0;
+    int files = 0, buffersRead = 0;
     for (const auto& entry : std::filesystem::recursive_directory_iterator(kGltf)) {
         const std::string extension = entry.path().extension().string();
         if (extension != ".gltf" && extension != ".glb") continue;
         const std::string bytes = fileBytes(entry.path().string());
         const std::optional<JsonValue> document = gltfJson(bytes);
         ASSERT_TRUE(document) << entry.path();
-        const std::optional<std::string> error = gltfStructureError(*document, glbBinLength(bytes));
+        // with the bytes of its buffers, as loadModel gives them: the indices of its line loops
+        // (Mesh_PrimitiveMode_09) are read
+        const std::optional<std::string_view> bin = glbBin(bytes);
+        const auto bufferBytes = [&](size_t index,
+                                     std::string_view uri) -> std::optional<std::string> {
+            if (bin && index == 0) return std::string(*bin);
+            const std::filesystem::path file = entry.path().parent_path() / uri;
+            if (uri.empty() || !std::filesystem::is_regular_file(file)) return std::nullopt;
+            ++buffersRead;
+            return fileBytes(file.string());
+        };
+        const std::optional<std::string> error =
+            gltfStructureError(*document, glbBinLength(bytes), bufferBytes);
         EXPECT_FALSE(error) << entry.path() << ": " << *error;
         ++files;
     }
     EXPECT_GT(files, 40);
+    EXPECT_GT(buffersRead, 0);  // Mesh_PrimitiveMode_09's line loops, read from its .bin
     const std::string glb = fileBytes((kGltf / "BoxTextured-glTF-Binary/BoxTextured.glb").string());
     EXPECT_EQ(glbBinLength(glb), 3276u);  // its mesh and its PNG
     EXPECT_EQ(glbBinLength("{}"), std::nullopt);
@@ -369,6 +382,51 @@ TEST(GltfStructure, StripsFansAndLoopsHaveEnoughVertices) {
                 R"("count": 3, "type": "VEC3")", R"("count": 2, "type": "VEC3")"),
          "primitive 0 of mesh 0 is a triangle fan of 2 vertices, fewer than 3"},
     });
+}
+
+// Assimp 5.2 closes an indexed line loop with the first index of its first line, read through a
+// null pointer when it dropped that line for a vertex out of range: the first two indices are
+// read, from a data URI, a .glb's BIN chunk or a file the loader gives. (The bytes: 3 positions
+// (0,0,0), (1,0,0), (0,1,0) and 3 16-bit indices, encoded by Python's base64.)
+TEST(GltfStructure, IndexedLineLoopsStartOnVertices) {
+    const std::string loop = edited(kTriangle, R"("indices": 1)", R"("indices": 1, "mode": 2)");
+    const auto inline_ = [&](const char* base64) {
+        return edited(
+            loop, R"("uri": "triangle.bin")",
+            std::string(R"("uri": "data:application/octet-stream;base64,)") + base64 + "\"");
+    };
+    const std::string first =
+        "primitive 0 of mesh 0 is a line loop whose first line joins vertices ";
+    expectReasons({
+        {inline_("AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA="), ""},  // 0 1 2
+        {inline_("AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAABQAAAAEAAAA="),       // 5 0 1
+         first + "5 and 0, but its POSITION has 3 vertices"},
+        // a later line past the vertices is dropped, and does not close the loop
+        {inline_("AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAcAAAA="), ""},  // 0 1 7
+        {edited(loop, R"("attributes": {"POSITION": 0})", R"("attributes": {})"),
+         "primitive 0 of mesh 0 is a line loop of indices without POSITION: it has no vertices"},
+    });
+    // The loader's bytes: a .glb's buffer 0 (its BIN chunk), or the file a uri names. Indices 2
+    // and 3 of 3 vertices, little-endian, from byte 36.
+    std::string bytes(44, '\0');
+    bytes[36] = 2;
+    bytes[38] = 3;
+    std::vector<std::pair<size_t, std::string>> asked;
+    const auto give = [&](size_t index, std::string_view uri) -> std::optional<std::string> {
+        asked.emplace_back(index, std::string(uri));
+        return bytes;
+    };
+    EXPECT_EQ(structure(loop, std::nullopt, give),
+              first + "2 and 3, but its POSITION has 3 vertices");
+    EXPECT_EQ(structure(loop, 44, give), first + "2 and 3, but its POSITION has 3 vertices");
+    EXPECT_EQ(asked, (std::vector<std::pair<size_t, std::string>>{{0, "triangle.bin"},
+                                                                  {0, "triangle.bin"}}));
+    bytes[38] = 1;
+    EXPECT_EQ(structure(loop, 44, give), "");
+    // what cannot be read is Assimp's: no bytes given, or a triangle list
+    EXPECT_EQ(structure(loop), "");
+    bytes[38] = 3;
+    EXPECT_EQ(structure(kTriangle, std::nullopt, give), "");
 }
 
 }  // namespace
