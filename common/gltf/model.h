@@ -2,6 +2,7 @@
 // Models through Assimp (glTF 2.0 first): geometry with node transforms accumulated, and every
 // primitive's material read into one plain struct. Model is pure data (no GL); GpuModel uploads
 // it. Drawing policy (which shader, which inputs) is the sample's.
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -68,6 +69,19 @@ struct Material {
     // glTF's default material, for primitives that name none: every factor at its default (a
     // white, fully metallic, fully rough surface), no textures.
     bool gltfDefault = false;
+
+    // Its texture slots, in a fixed order (the model pack's), and their names in glTF.
+    static constexpr std::array<const char*, 6> kTextureNames = {
+        "baseColorTexture", "metallicRoughnessTexture", "normalTexture",
+        "occlusionTexture", "emissiveTexture",          "specularGlossinessTexture"};
+    std::array<TextureRef*, 6> textures() {
+        return {&baseColorTexture, &metallicRoughnessTexture, &normalTexture,
+                &occlusionTexture, &emissiveTexture,          &specularGlossinessTexture};
+    }
+    std::array<const TextureRef*, 6> textures() const {
+        return {&baseColorTexture, &metallicRoughnessTexture, &normalTexture,
+                &occlusionTexture, &emissiveTexture,          &specularGlossinessTexture};
+    }
 };
 
 struct ModelPrimitive {

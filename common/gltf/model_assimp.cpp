@@ -14,6 +14,7 @@
 #include <functional>
 #include <set>
 #include <type_traits>
+#include <utility>
 
 #include "base/error.h"
 #include "base/paths.h"
@@ -509,6 +510,19 @@ Model loadModel(const fs::path& file) {
         model.materials.back().gltfDefault = true;
     }
     if (document) applyTexCoordOverrides(*document, model.materials, model.notes);
+    // The samples (their shaders, the pages' packs) read TEXCOORD_0 and TEXCOORD_1, as the
+    // Khronos viewer does.
+    for (Material& material : model.materials) {
+        const auto slots = material.textures();
+        for (size_t s = 0; s < slots.size(); ++s) {
+            const int set = std::exchange(slots[s]->uvSet, slots[s]->uvSet == 1 ? 1 : 0);
+            if (set == 0 || set == 1 || !slots[s]->present()) continue;
+            model.notes.push_back("material '" + printable(material.name) + "': its " +
+                                  Material::kTextureNames[s] + " reads TEXCOORD_" +
+                                  std::to_string(set) +
+                                  ", drawn with TEXCOORD_0 (the samples read sets 0 and 1)");
+        }
+    }
     std::set<const aiNode*> seen;
     reader.visit(scene->mRootNode, glm::mat4(1.0f), 0, seen);
     if (model.primitives.empty()) throw Error(where + "no triangles to draw");

@@ -124,13 +124,6 @@ bool finite(const V& v) {
     return true;
 }
 
-// The texture slots of a material, in the order the pack keeps them.
-template <typename M>
-auto textureSlots(M& m) {
-    return std::array{&m.baseColorTexture, &m.metallicRoughnessTexture, &m.normalTexture,
-                      &m.occlusionTexture, &m.emissiveTexture, &m.specularGlossinessTexture};
-}
-
 }  // namespace
 
 fs::path packedModelPath(const fs::path& model) {
@@ -142,7 +135,7 @@ std::string encodeModelPack(const Model& model) {
     std::vector<EmbeddedImage> images = model.embeddedImages;
     std::map<fs::path, int> files;
     for (const Material& m : model.materials) {
-        for (const TextureRef* ref : textureSlots(m)) {
+        for (const TextureRef* ref : m.textures()) {
             if (ref->file.empty() || files.count(ref->file)) continue;
             const std::string bytes = readTextFile(ref->file);
             files[ref->file] = int(images.size());
@@ -183,7 +176,7 @@ std::string encodeModelPack(const Model& model) {
         out.text(m.name);
         for (const bool flag : {m.unlit, m.specularGlossiness, m.doubleSided, m.gltfDefault})
             out.value(std::uint8_t(flag));
-        for (const TextureRef* ref : textureSlots(m)) writeTexture(out, *ref, files);
+        for (const TextureRef* ref : m.textures()) writeTexture(out, *ref, files);
         out.value(m.baseColorFactor);
         out.value(m.metallicFactor);
         out.value(m.roughnessFactor);
@@ -271,7 +264,7 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
         m.name = in.text();
         for (bool* flag : {&m.unlit, &m.specularGlossiness, &m.doubleSided, &m.gltfDefault})
             *flag = in.value<std::uint8_t>() != 0;
-        for (TextureRef* ref : textureSlots(m)) *ref = readTexture(in, model.embeddedImages.size());
+        for (TextureRef* ref : m.textures()) *ref = readTexture(in, model.embeddedImages.size());
         m.baseColorFactor = in.value<glm::vec4>();
         m.metallicFactor = in.value<float>();
         m.roughnessFactor = in.value<float>();
@@ -304,7 +297,8 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
         const size_t n = p.mesh.positions.size();
         for (const size_t size : {p.mesh.normals.size(), p.mesh.uvs.size(), p.mesh.tangents.size(),
                                   p.mesh.colors.size(), p.mesh.uvs1.size()}) {
-            if (size != 0 && size != n) in.fail("a vertex attribute's count differs from the positions'");
+            if (size != 0 && size != n)
+                in.fail("a vertex attribute's count differs from the positions'");
         }
         for (const std::uint32_t index : p.mesh.indices) {
             if (index >= n) in.fail("vertex index out of range");

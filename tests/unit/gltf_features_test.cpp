@@ -203,6 +203,30 @@ TEST(GltfFeatures, TextureTransformTexCoordOverridesTheTextureInfos) {
     EXPECT_EQ(byName["c"]->emissiveTexture.uvSet, 1);
 }
 
+// A texture on TEXCOORD_2 (glTF allows any set) is drawn with TEXCOORD_0, with a note: the
+// shaders and the pages' packs take sets 0 and 1 (a pack refuses any other), as the Khronos
+// viewer does.
+TEST(GltfFeatures, TexCoordSetsPastOneAreNotedAndDrawnWithTheFirst) {
+    const fs::path dir = testOutputDir("gltf_features_texcoord2");
+    writePng(dir / "t.png", Image{1, 1, 4, {200, 200, 200, 255}});
+    const Model model = loadModel(writeTextFile(dir, "texcoord2.gltf",
+                                                R"({"asset":{"version":"2.0"},
+)" + squareBuffersJson(1.0f) + R"(
+"images":[{"uri":"t.png"}],"textures":[{"source":0}],
+"materials":[{"name":"m","pbrMetallicRoughness":{"baseColorTexture":{"index":0,"texCoord":2}},
+   "normalTexture":{"index":0,"texCoord":1}}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) +
+                                                    R"(]}],
+"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})"));
+    ASSERT_EQ(model.notes.size(), 1u);
+    EXPECT_EQ(model.notes[0],
+              "material 'm': its baseColorTexture reads TEXCOORD_2, drawn with TEXCOORD_0 (the "
+              "samples read sets 0 and 1)");
+    ASSERT_FALSE(model.materials.empty());
+    EXPECT_EQ(model.materials[0].baseColorTexture.uvSet, 0);
+    EXPECT_EQ(model.materials[0].normalTexture.uvSet, 1);
+}
+
 // The loader finds Assimp's materials in the file by the order Assimp reads them in
 // (assimpMaterialOrder); on every glTF 2.0 file Debian ships and on our own assets the names
 // must line up, or a texCoord override would land on another material.

@@ -71,10 +71,10 @@ void expectRoundTrip(const fs::path& file) {
         EXPECT_EQ(std::tie(a.name, a.unlit, a.specularGlossiness, a.doubleSided, a.gltfDefault),
                   std::tie(b.name, b.unlit, b.specularGlossiness, b.doubleSided, b.gltfDefault));
         EXPECT_EQ(a.baseColorFactor, b.baseColorFactor);
-        EXPECT_EQ(std::tie(a.metallicFactor, a.roughnessFactor, a.normalScale,
-                           a.occlusionStrength, a.glossinessFactor, a.alphaMode, a.alphaCutoff),
-                  std::tie(b.metallicFactor, b.roughnessFactor, b.normalScale,
-                           b.occlusionStrength, b.glossinessFactor, b.alphaMode, b.alphaCutoff));
+        EXPECT_EQ(std::tie(a.metallicFactor, a.roughnessFactor, a.normalScale, a.occlusionStrength,
+                           a.glossinessFactor, a.alphaMode, a.alphaCutoff),
+                  std::tie(b.metallicFactor, b.roughnessFactor, b.normalScale, b.occlusionStrength,
+                           b.glossinessFactor, b.alphaMode, b.alphaCutoff));
         EXPECT_EQ(a.emissiveFactor, b.emissiveFactor);
         EXPECT_EQ(a.specularFactor, b.specularFactor);
         expectSameTexture(original, a.baseColorTexture, packed, b.baseColorTexture);
@@ -95,9 +95,7 @@ void expectRoundTrip(const fs::path& file) {
     size_t files = 0;
     std::set<fs::path> seen;
     for (const Material& m : original.materials) {
-        for (const TextureRef* ref : {&m.baseColorTexture, &m.metallicRoughnessTexture,
-                                      &m.normalTexture, &m.occlusionTexture, &m.emissiveTexture,
-                                      &m.specularGlossinessTexture}) {
+        for (const TextureRef* ref : m.textures()) {
             if (!ref->file.empty() && seen.insert(ref->file).second) ++files;
         }
     }
@@ -141,12 +139,14 @@ TEST(ModelPack, DamagedPacksAreOneErrorNamingTheFile) {
                   "x.gltf.pbrmodel: truncated (not a whole model pack)")
             << size;
     }
-    EXPECT_EQ(error(bytes + "x"), "x.gltf.pbrmodel: bytes after the model (not a model pack of "
-                                  "this layout)");
+    EXPECT_EQ(error(bytes + "x"),
+              "x.gltf.pbrmodel: bytes after the model (not a model pack of "
+              "this layout)");
     std::string other = bytes;
     other[8] = 7;  // the layout's version
-    EXPECT_EQ(error(other), "x.gltf.pbrmodel: a model pack of layout 7, not 1 (made by another "
-                            "version of the suite)");
+    EXPECT_EQ(error(other),
+              "x.gltf.pbrmodel: a model pack of layout 7, not 1 (made by another "
+              "version of the suite)");
 }
 
 }  // namespace
