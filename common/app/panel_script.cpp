@@ -15,7 +15,8 @@ std::vector<InputFrame> parsePanelScript(std::string_view text, const std::strin
         const size_t end = std::min(text.find('\n', at), text.size());
         const std::string line(text.substr(at, end - at));
         at = end + 1;
-        const std::string where = name + ":" + std::to_string(frames.size() + 1) + ": '" + line;
+        const std::string where =
+            name + ":" + std::to_string(frames.size() + 1) + ": '" + printable(line);
         InputFrame frame;
         if (line != "-") {
             std::istringstream fields(line);

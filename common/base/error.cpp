@@ -7,13 +7,14 @@
 namespace pbr {
 
 namespace {
-// Keep the promise of one line even when a message carries a newline (a driver's log, say).
+// Keep the promise of one line even when a message carries a newline (a driver's log, say), and
+// of a line the terminal shows as it is (no carriage return, escape sequence or bell).
 std::string oneLine(std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     for (char& c : text) {
         if (c == '\n' || c == '\r') c = ' ';
     }
-    return text;
+    return printable(text);
 }
 }  // namespace
 

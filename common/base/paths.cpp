@@ -73,11 +73,11 @@ std::vector<EnvironmentVariable> environmentVariables() {
 std::string displayPath(const fs::path& path) {
     std::error_code ec;
     fs::path absolute = fs::absolute(path, ec);
-    if (ec) return path.string();
+    if (ec) return printable(path.string());
     absolute = absolute.lexically_normal();
     fs::path relative = absolute.lexically_relative(fs::current_path(ec));
-    if (!ec && !relative.empty() && *relative.begin() != "..") return relative.string();
-    return absolute.string();
+    if (!ec && !relative.empty() && *relative.begin() != "..") return printable(relative.string());
+    return printable(absolute.string());
 }
 
 std::string utf8Path(const fs::path& path) {

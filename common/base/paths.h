@@ -30,7 +30,7 @@ struct EnvironmentVariable {
 std::vector<EnvironmentVariable> environmentVariables();
 
 // A path as a user wants to read it in a message: relative to the working directory when it lies
-// below it, absolute otherwise.
+// below it, absolute otherwise; one line (control characters escaped, as printable() does).
 std::string displayPath(const std::filesystem::path& path);
 // The path in UTF-8, as libraries that take a char path (Assimp) expect on every platform.
 std::string utf8Path(const std::filesystem::path& path);

@@ -74,8 +74,8 @@ void refuseImpossiblePng(const std::vector<std::uint8_t>& bytes, const std::stri
     const double samples = colorType == 2 ? 3 : colorType == 4 ? 2 : colorType == 6 ? 4 : 1;
     const double rowBytes = 1 + std::ceil(width * depth * samples / 8);
     if (height * rowBytes > 1032.0 * double(bytes.size())) {
-        const std::string claimed = std::to_string(std::uint64_t(width)) + " x " +
-                                    std::to_string(std::uint64_t(height));
+        const std::string claimed =
+            std::to_string(std::uint64_t(width)) + " x " + std::to_string(std::uint64_t(height));
         throw Error(what + ": damaged PNG header (it claims " + claimed + " pixels, more than " +
                     std::to_string(bytes.size()) + " bytes of PNG can hold)");
     }
@@ -222,7 +222,8 @@ void rgbeToFloat(const std::uint8_t* rgbe, float* rgb) {
             if (run) {
                 if (at >= bytes.size()) return kTruncated;
                 const std::uint8_t value = data[at++];
-                for (int k = 0; k < count; ++k, ++x) scanline[size_t(x) * 4 + size_t(channel)] = value;
+                for (int k = 0; k < count; ++k, ++x)
+                    scanline[size_t(x) * 4 + size_t(channel)] = value;
             } else {
                 if (size_t(count) > bytes.size() - at) return kTruncated;
                 for (int k = 0; k < count; ++k, ++x)
@@ -259,8 +260,8 @@ HdrImage decodeHdr(std::string_view bytes, const std::string& name) {
         if (header->empty()) break;
         if (*header == "FORMAT=32-bit_rle_rgbe") rgbe = true;
         if (header->starts_with("FORMAT=") && !rgbe) {
-            throw fail("unsupported pixel format (" + std::string(*header) +
-                       "; only 32-bit_rle_rgbe)");
+            throw fail("unsupported pixel format (" + printable(header->substr(0, 60)) +
+                       (header->size() > 60 ? "..." : "") + "; only 32-bit_rle_rgbe)");
         }
     }
     if (!rgbe) throw fail("no FORMAT=32-bit_rle_rgbe line in the header");
@@ -326,7 +327,8 @@ float maxValue(const HdrImage& image) {
     float largest = 0.0f;
     const size_t row = std::max<size_t>(1, size_t(image.width) * 3);
     for (size_t at = 0; at < image.pixels.size(); at += row) {
-        largest = std::max(largest, largestOf(&image.pixels[at], std::min(row, image.pixels.size() - at)));
+        largest = std::max(largest,
+                           largestOf(&image.pixels[at], std::min(row, image.pixels.size() - at)));
     }
     return largest;
 }

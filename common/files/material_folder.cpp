@@ -126,7 +126,7 @@ MaterialFiles materialFilesOf(const fs::path& dir, const std::vector<fs::path>& 
             std::string list;
             for (size_t i = 0; i < files.size(); ++i) {
                 list += (i == 0 ? "" : i + 1 == files.size() ? " and " : ", ");
-                list += files[i].filename().string();
+                list += printable(files[i].filename().string());
             }
             throw Error(displayPath(dir) + ": " + std::to_string(files.size()) + " files for the " +
                         map + " map (" + list + "); keep one");

@@ -118,8 +118,8 @@ struct Preprocessor {
             fs::path target = file.parent_path() / name;
             if (!fs::exists(target, ec)) target = includeDir / name;
             if (!fs::exists(target, ec)) {
-                throw Error(here + "#include \"" + name + "\": not found beside the file or in " +
-                            displayPath(includeDir));
+                throw Error(here + "#include \"" + printable(name) +
+                            "\": not found beside the file or in " + displayPath(includeDir));
             }
             expand(target, here);
             // Back in this file: the next line is number + 1.
@@ -174,8 +174,8 @@ std::vector<std::string> mapShaderLog(const std::string& log, const std::vector<
         for (const char* word : {"ERROR: ", "WARNING: "}) {  // ANGLE: "ERROR: 0:12: message"
             if (scan.eat(word)) {
                 severity = word[0] == 'E' ? "error: " : "warning: ";
-                parsed = scan.number(source) && scan.eat(":") && scan.number(encoded) &&
-                         scan.eat(":");
+                parsed =
+                    scan.number(source) && scan.eat(":") && scan.number(encoded) && scan.eat(":");
             }
         }
         if (severity.empty() && scan.number(source)) {

@@ -69,6 +69,10 @@ inline bool finite(float value) {
 // more than that.
 inline void expectOneLine(const std::string& message, const std::string& name) {
     if (message.find('\n') != std::string::npos) finding("a message of several lines: " + message);
+    // a carriage return, an escape sequence or a bell would garble the line it is printed on
+    if (std::any_of(message.begin(), message.end(),
+                    [](char c) { return (unsigned char)c < 0x20 || c == 0x7f; }))
+        finding("a message with a control character: " + printable(message));
     if (!name.empty() && message.find(name) == std::string::npos)
         finding("a message that does not name '" + name + "': " + message);
     if (message.size() <= name.size() + 2) finding("a message without a reason: " + message);

@@ -1,0 +1,3 @@
+#./:12
+#include "c.gls: FragColo'l"
+s2
