@@ -946,8 +946,8 @@ private:
             for (std::uint64_t i = 0; i < 2; ++i) {
                 const std::uint64_t at = view.offset + read.offset + i * stride;
                 if (at + size > bytes->size()) return true;  // Assimp's to judge
-                for (std::uint64_t b = size; b-- > 0;)
-                    first[i] = (first[i] << 8) | std::uint8_t((*bytes)[size_t(at + b)]);
+                for (std::uint64_t b = 0; b < size; ++b)  // little-endian
+                    first[i] |= std::uint64_t(std::uint8_t((*bytes)[size_t(at + b)])) << (8 * b);
             }
         }
         const std::uint64_t vertices = accessorsRead_[size_t(position)]->count;
