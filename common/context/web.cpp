@@ -15,9 +15,11 @@ EM_JS(void, pbr_hand_over, (const char* name, const unsigned char* bytes, int si
     if (Module["pbrHandOver"]) Module["pbrHandOver"](UTF8ToString(name), data);
 });
 
-// An import the build marks as one that suspends the wasm (-sASYNCIFY_IMPORTS).
+// An import the build marks as one that suspends the wasm (-sASYNCIFY_IMPORTS). The page may
+// hold the program after a frame (Module.pbrFrameShown, web/shell.html: a test's screenshot).
 EM_ASYNC_JS(void, pbr_wait_for_animation_frame, (), {
     await new Promise(function(resolve) { requestAnimationFrame(function() { resolve(); }); });
+    if (Module["pbrFrameShown"]) await Module["pbrFrameShown"]();
 });
 
 // After a rendering update of the browser (an animation frame, then a task after it): what the

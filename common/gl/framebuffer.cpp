@@ -3,12 +3,14 @@
 #include <string>
 
 #include "base/error.h"
+#include "gl/mesh.h"
+#include "gl/shader.h"
 
 namespace pbr {
 
 namespace {
 // GL 3.3 turns sRGB encoding on and off (GL_FRAMEBUFFER_SRGB); OpenGL ES always encodes into an
-// sRGB target, so there is nothing to switch (and no web sample draws into one).
+// sRGB target, so there is nothing to switch.
 void srgbEncoding(bool on) {
 #ifdef PBR_WEBGL
     (void)on;
@@ -53,6 +55,16 @@ void requireCompleteFramebuffer(const char* what) {
     }
 }
 
+// In a browser, the resolved picture of an sRGB target is a texture (sampling it decodes), drawn to
+// the canvas by present_srgb.frag, which encodes again.
+struct RenderTarget::SrgbPresenter {
+    GlTexture picture;
+    Shader shader{"ibl/fullscreen.vert", "common/present_srgb.frag"};
+    GpuMesh quad{pbr::quad()};
+};
+
+RenderTarget::~RenderTarget() = default;
+
 RenderTarget::RenderTarget(int width, int height, int samples, bool srgb)
     : width_(width), height_(height), samples_(samples), srgb_(srgb) {
     GLint maxSamples = 0;
@@ -62,6 +74,21 @@ RenderTarget::RenderTarget(int width, int height, int samples, bool srgb)
                     std::to_string(maxSamples) + " samples");
     }
     attachStorage(resolved_.id(), resolvedColor_.id(), resolvedDepth_.id(), 0, width, height, srgb);
+#ifdef PBR_WEBGL
+    if (srgb) {
+        presenter_ = std::make_unique<SrgbPresenter>();
+        glBindTexture(GL_TEXTURE_2D, presenter_->picture.id());
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_SRGB8_ALPHA8, width, height);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                               presenter_->picture.id(), 0);
+        presenter_->shader.set("picture", 0);
+    }
+#endif
     requireCompleteFramebuffer("render target");
     if (samples_ > 0) {
         attachStorage(multisampled_.id(), multisampledColor_.id(), multisampledDepth_.id(), samples,
@@ -93,6 +120,19 @@ void RenderTarget::bindResolved() const {
 }
 
 void RenderTarget::blitToDefault(int width, int height) const {
+    if (presenter_) {
+        const SavedGlState saved;
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        glViewport(0, 0, width, height);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_BLEND);
+        presenter_->shader.use();
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, presenter_->picture.id());
+        presenter_->quad.draw();
+        return;
+    }
     if (srgb_) srgbEncoding(false);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved_.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);

@@ -7,7 +7,11 @@
 // `srgb` stores sRGB8_ALPHA8 instead and draws with GL_FRAMEBUFFER_SRGB on: the shader writes
 // linear values, and the GL encodes them and blends in linear light (03's BLEND materials). The
 // resolve, the read-back and the blit run with the conversion off, so the stored bytes travel as
-// they are, the same way as for every other sample.
+// they are, the same way as for every other sample. In a browser the blit cannot keep them (WebGL 2
+// decodes an sRGB source into the canvas), so there an sRGB target is shown by a draw that
+// encodes again (shaders/common/present_srgb.frag).
+#include <memory>
+
 #include "files/image.h"
 #include "gl/gl.h"
 
@@ -17,6 +21,7 @@ class RenderTarget {
 public:
     // samples 0: no multisampling. Throws Error naming the status when incomplete.
     RenderTarget(int width, int height, int samples, bool srgb = false);
+    ~RenderTarget();
 
     void bind() const;     // the framebuffer to draw into, with the viewport set
     void resolve() const;  // multisampled -> single-sample (no-op without MSAA)
@@ -38,6 +43,8 @@ private:
     GlRenderbuffer resolvedColor_, resolvedDepth_;
     GlFramebuffer multisampled_;
     GlRenderbuffer multisampledColor_, multisampledDepth_;
+    struct SrgbPresenter;  // a browser's sRGB target: its picture as a texture, and the draw
+    std::unique_ptr<SrgbPresenter> presenter_;
 };
 
 // Throws Error("<what>: framebuffer incomplete (<status>)") unless the bound draw framebuffer is

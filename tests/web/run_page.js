@@ -1,8 +1,11 @@
 // Opens one web sample's page in headless Chromium and waits, in real time, until the sample has
 // exited (the page's #pbr-exit, web/shell.html), then leaves what the page holds in a folder:
 // every file the run wrote, its log (page.log), its exit code (exit.txt), the page's query
-// string at the end (address.txt: the page's controls keep it current) and every text its
-// header showed, one a line (said.txt). The browser is driven over the DevTools protocol on a
+// string at the end (address.txt: the page's controls keep it current), every text its
+// header showed, one a line (said.txt), and, when the address asks for one with shot=N after '#'
+// (web/shell.html), the canvas as the browser showed frame N for a person to see, cut from a
+// screenshot of the page (canvas-screenshot.png): not the program's own read-back, so what WebGL
+// does to a picture on its way to the screen is in it. The browser is driven over the DevTools protocol on a
 // pipe (tests/support/chromium_pipe.js), so nothing waits on a guess: not a virtual-time budget,
 // which can end a page whose frame loop is still running.
 //
@@ -37,6 +40,15 @@ const collect = `(function () {
                          said: (status && status.getAttribute("data-said")) || "" });
 })()`;
 
+// The canvas's place in the page, once the page holds a frame for its screenshot (null before).
+const shotReady = `(function () {
+  var status = document.getElementById("pbr-status");
+  if (!status || status.getAttribute("data-shot") !== "ready") return null;
+  var box = document.getElementById("canvas").getBoundingClientRect();
+  return JSON.stringify({ x: box.left + scrollX, y: box.top + scrollY, width: box.width,
+                         height: box.height });
+})()`;
+
 function finish(code, why) {
   const browserErr = browser.stderr();
   if (why) console.error(`run_page.js: ${why}${browserErr ? "\n" + browserErr.slice(-2000) : ""}`);
@@ -49,6 +61,16 @@ function finish(code, why) {
                            timeoutMs);
   const sessionId = await browser.open(url);
   for (;;) {
+    const shot = await browser.evaluate(sessionId, shotReady);
+    if (typeof shot === "string") {
+      // the page's pixels 1:1 (a canvas of W x H pixels is W x H CSS pixels at scale 1)
+      const { data } = await browser.send("Page.captureScreenshot", {
+        format: "png", captureBeyondViewport: true, clip: { ...JSON.parse(shot), scale: 1 },
+      }, sessionId);
+      writeWhole(path.join(dir, "canvas-screenshot.png"), Buffer.from(data, "base64"));
+      await browser.evaluate(sessionId, `document.getElementById("pbr-status")
+          .setAttribute("data-shot", "taken"), Module.pbrShotTaken(), true`);
+    }
     const value = await browser.evaluate(sessionId, collect);
     if (typeof value === "string") {
       const page = JSON.parse(value);
