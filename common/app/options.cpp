@@ -138,7 +138,8 @@ std::vector<double> parseNumbersFlag(const FlagSpec& spec, const std::string& va
     std::vector<double> numbers;
     std::stringstream stream(value);
     std::string part;
-    while (std::getline(stream, part, ',')) numbers.push_back(parseNumberFlag(spec.name, part, spec.min, spec.max));
+    while (std::getline(stream, part, ','))
+        numbers.push_back(parseNumberFlag(spec.name, part, spec.min, spec.max));
     if (int(numbers.size()) != spec.count || (!value.empty() && value.back() == ',')) {
         fail(spec.name + ": " + inQuotes(value) + " is not " + spec.valueName + " (" +
              std::to_string(spec.count) + " numbers, comma-separated)");
@@ -166,7 +167,9 @@ void checkSampleFlag(const FlagSpec& spec, const std::string& value) {
             parseNumbersFlag(spec, value);
             break;
         case FlagSpec::Kind::Choice:
-            if (std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end()) {
+            if (std::find(spec.choices.begin(), spec.choices.end(), value) == spec.choices.end() &&
+                std::none_of(spec.aliases.begin(), spec.aliases.end(),
+                             [&](const auto& alias) { return alias.first == value; })) {
                 // The choices as the usage lists them ("--filter trilinear|nearest").
                 fail(spec.name + ": " + inQuotes(value) + " is not one of " + spec.valueName);
             }
@@ -260,6 +263,12 @@ FlagSpec FlagSpec::choice(std::string name, std::vector<std::string> choices, st
             .choices = std::move(choices)};
 }
 
+FlagSpec FlagSpec::withAliases(std::vector<std::pair<std::string, std::string>> words) const {
+    FlagSpec spec = *this;
+    spec.aliases = std::move(words);
+    return spec;
+}
+
 FlagSpec FlagSpec::asLive() const {
     FlagSpec spec = *this;
     spec.live = true;
@@ -285,7 +294,6 @@ std::string flagNumberText(double value) {
     }
     return text;
 }
-
 
 int parseIntFlag(const std::string& flag, const std::string& value, int min, int max) {
     long long number = 0;
@@ -358,6 +366,9 @@ Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec
 
         if (own) {
             checkSampleFlag(*own, value);
+            for (const auto& [alias, choice] : own->aliases) {
+                if (value == alias) value = choice;  // kept as the word the sample knows
+            }
             options.sampleFlags[flag] = value;
         } else if (flag == "--help") {
             options.help = true;
@@ -441,7 +452,8 @@ std::string usageText(const std::string& program, std::span<const FlagSpec> samp
     std::ostringstream out;
     out << "usage: " << program << " [flags]\n\nflags every sample takes:\n";
     for (const CommonFlag& flag : kCommonFlags) {
-        if (kInPage && (std::string(flag.name) == "--backend" || std::string(flag.name) == "--panel"))
+        if (kInPage &&
+            (std::string(flag.name) == "--backend" || std::string(flag.name) == "--panel"))
             continue;
         std::string left = flag.name;
         if (flag.valueName) left.append(" ").append(flag.valueName);
@@ -450,9 +462,14 @@ std::string usageText(const std::string& program, std::span<const FlagSpec> samp
     if (!sampleFlags.empty()) {
         out << "\nflags of " << program << ":\n";
         for (const FlagSpec& flag : sampleFlags) {
-            const bool saysDefault = !flag.defaultValue.empty() && flag.kind != FlagSpec::Kind::Choice;
-            usageLine(out, flag.name + (flag.valueName.empty() ? "" : " " + flag.valueName),
-                      flag.help + (saysDefault ? " (default " + flag.defaultValue + ")" : ""));
+            const bool saysDefault =
+                !flag.defaultValue.empty() && flag.kind != FlagSpec::Kind::Choice;
+            std::string also;
+            for (const auto& [alias, choice] : flag.aliases)
+                also += (also.empty() ? "; " : ", ") + alias + " is " + choice;
+            usageLine(
+                out, flag.name + (flag.valueName.empty() ? "" : " " + flag.valueName),
+                flag.help + (saysDefault ? " (default " + flag.defaultValue + ")" : "") + also);
         }
     }
     if (kInPage) {

@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pbr {
@@ -24,9 +25,12 @@ struct FlagSpec {
     std::string valueName{};  // "N", "FILE", "a|b"; empty for a switch
     std::string help{};
     Kind kind = Kind::Text;
-    double min = 0.0, max = 0.0;       // Integer, Number(s): the allowed range, both ends included
-    int count = 0;                     // Numbers: how many, comma-separated
+    double min = 0.0, max = 0.0;  // Integer, Number(s): the allowed range, both ends included
+    int count = 0;                // Numbers: how many, comma-separated
     std::vector<std::string> choices{};  // Choice: the allowed words; the first is the default
+    // Choice: other words for some of them, {alias, choice} (07's --view albedo is base-color):
+    // taken as the choice they stand for, and listed by --help.
+    std::vector<std::pair<std::string, std::string>> aliases{};
     // The value when the flag is not given, as its text ("4", "0.5", "1,0.7,1.8"): Integer,
     // Number and Numbers (where it is empty, the sample has no single default). --help says it.
     std::string defaultValue{};
@@ -52,6 +56,8 @@ struct FlagSpec {
 
     // The same flag, read by the sample every frame (so the panel's control for it is live).
     FlagSpec asLive() const;
+    // The same choice flag, with other words for some of its choices.
+    FlagSpec withAliases(std::vector<std::pair<std::string, std::string>> words) const;
     // The same flag with a check of its own (see `refuse`).
     FlagSpec refusing(std::function<std::string(const std::string& value)> why) const;
 };
@@ -77,7 +83,7 @@ struct Options {
     int msaa = 4;                // samples per pixel; 0 or 1 turns multisampling off
     std::optional<CameraStart> camera;
     std::optional<double> fov;  // --fov: the fly camera's field of view in degrees
-    std::string backend;  // offscreen backend: "osmesa", "egl", or "" (automatic)
+    std::string backend;        // offscreen backend: "osmesa", "egl", or "" (automatic)
     std::map<std::string, std::string> sampleFlags;  // "--lights" -> "3"; switches -> ""
 
     bool has(const std::string& flag) const { return sampleFlags.count(flag) != 0; }

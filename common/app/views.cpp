@@ -14,14 +14,28 @@ struct Named {
     std::string_view name;
 };
 constexpr Named kNames[] = {
-    {View::Final, "final"},       {View::Albedo, "albedo"},     {View::Normal, "normal"},
-    {View::Metallic, "metallic"}, {View::Roughness, "roughness"}, {View::Ao, "ao"},
-    {View::F0, "f0"},             {View::D, "d"},               {View::G, "g"},
-    {View::F, "f"},               {View::Specular, "specular"}, {View::Diffuse, "diffuse"},
-    {View::NdotL, "ndotl"},       {View::Direct, "direct"},     {View::Irradiance, "irradiance"},
-    {View::Prefiltered, "prefiltered"}, {View::Lut, "lut"},
-    {View::AmbientDiffuse, "ambient-diffuse"}, {View::AmbientSpecular, "ambient-specular"},
-    {View::Ambient, "ambient"},   {View::BaseColor, "base-color"}, {View::Occlusion, "occlusion"},
+    {View::Final, "final"},
+    {View::Albedo, "albedo"},
+    {View::Normal, "normal"},
+    {View::Metallic, "metallic"},
+    {View::Roughness, "roughness"},
+    {View::Ao, "ao"},
+    {View::F0, "f0"},
+    {View::D, "d"},
+    {View::G, "g"},
+    {View::F, "f"},
+    {View::Specular, "specular"},
+    {View::Diffuse, "diffuse"},
+    {View::NdotL, "ndotl"},
+    {View::Direct, "direct"},
+    {View::Irradiance, "irradiance"},
+    {View::Prefiltered, "prefiltered"},
+    {View::Lut, "lut"},
+    {View::AmbientDiffuse, "ambient-diffuse"},
+    {View::AmbientSpecular, "ambient-specular"},
+    {View::Ambient, "ambient"},
+    {View::BaseColor, "base-color"},
+    {View::Occlusion, "occlusion"},
     {View::Emissive, "emissive"},
 };
 }  // namespace
@@ -43,9 +57,22 @@ std::string viewConstant(View view) {
 FlagSpec viewFlag(std::span<const View> views) {
     std::vector<std::string> names;
     for (View view : views) names.emplace_back(viewName(view));
+    // LearnOpenGL's albedo and ao are the glTF texts' base colour and occlusion: a sample takes
+    // the other text's word too, so that a view keeps its name from one sample to the next.
+    std::vector<std::pair<std::string, std::string>> aliases;
+    const auto has = [&](View view) {
+        return std::find(views.begin(), views.end(), view) != views.end();
+    };
+    constexpr std::pair<View, View> kSameInput[] = {{View::Albedo, View::BaseColor},
+                                                    {View::Ao, View::Occlusion}};
+    for (const auto& [ours, theirs] : kSameInput) {
+        if (has(ours) && !has(theirs)) aliases.emplace_back(viewName(theirs), viewName(ours));
+        if (has(theirs) && !has(ours)) aliases.emplace_back(viewName(ours), viewName(theirs));
+    }
     return FlagSpec::choice("--view", std::move(names),
                             "show one input or term of the equation instead of the picture "
-                            "(default final: the picture; see README.md, \"Term views\")");
+                            "(default final: the picture; see README.md, \"Term views\")")
+        .withAliases(std::move(aliases));
 }
 
 std::vector<View> allViews() {

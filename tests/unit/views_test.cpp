@@ -6,7 +6,9 @@
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
+#include "app/options.h"
 #include "app/views.h"
 #include "base/error.h"
 #include "base/paths.h"
@@ -56,6 +58,45 @@ TEST(Views, NamesGoBothWays) {
     }
     EXPECT_EQ(viewFlag(kDirectLightViews).choices.front(), "final");
     EXPECT_THROW(viewNamed("gloss"), Error);
+}
+
+// One vocabulary: LearnOpenGL's albedo and ao are the glTF texts' base colour and occlusion, and
+// each sample takes both words, keeping its own text's (the other listed by --help), so a view
+// keeps its name from sample to sample.
+TEST(Views, EachSampleTakesTheOtherTextsWords) {
+    const auto parsed = [](std::span<const View> views, const std::string& word) {
+        const std::vector<FlagSpec> flags = {viewFlag(views)};
+        const std::vector<std::string> args = {"--view", word};
+        return parseOptions(args, flags).sampleFlags.at("--view");
+    };
+    for (const std::span<const View> views :
+         {std::span<const View>(kDirectLightViews), std::span<const View>(kLightTypeViews),
+          std::span<const View>(kIrradianceViews), std::span<const View>(kSplitSumViews)}) {
+        EXPECT_EQ(parsed(views, "albedo"), "albedo");
+        EXPECT_EQ(parsed(views, "base-color"), "albedo");
+        EXPECT_EQ(parsed(views, "occlusion"), "ao");
+        EXPECT_EQ(parsed(views, "ao"), "ao");
+        EXPECT_THROW(parsed(views, "emissive"), UsageError);  // no emission in those lessons
+    }
+    EXPECT_EQ(parsed(kGltfViews, "albedo"), "base-color");
+    EXPECT_EQ(parsed(kGltfViews, "ao"), "occlusion");
+    EXPECT_EQ(parsed(kGltfViews, "occlusion"), "occlusion");
+    // --help, its lines joined (it wraps at 100 columns)
+    const auto usage = [](std::span<const View> views) {
+        const std::vector<FlagSpec> flags = {viewFlag(views)};
+        std::string joined;
+        for (const char c : usageText("sample", flags)) {
+            if (c != ' ' && c != '\n')
+                joined += c;
+            else if (!joined.empty() && joined.back() != ' ')
+                joined += ' ';
+        }
+        return joined;
+    };
+    EXPECT_NE(usage(kDirectLightViews).find("; base-color is albedo, occlusion is ao"),
+              std::string::npos)
+        << usage(kDirectLightViews);
+    EXPECT_NE(usage(kGltfViews).find("; albedo is base-color, ao is occlusion"), std::string::npos);
 }
 
 }  // namespace
