@@ -67,7 +67,8 @@ std::string flagsJson(const std::vector<FlagSpec>& flags, const Options& options
         static const char* const kKinds[] = {"switch", "text",    "folder", "integer",
                                              "number", "numbers", "choice"};
         std::string choices;
-        for (const std::string& choice : spec.choices) choices += (choices.empty() ? "" : ",") + text(choice);
+        for (const std::string& choice : spec.choices)
+            choices += (choices.empty() ? "" : ",") + text(choice);
         const auto value = options.sampleFlags.find(spec.name);
         json += std::string(json.size() > 1 ? "," : "") + "{\"name\":" + text(spec.name) +
                 ",\"kind\":\"" + kKinds[int(spec.kind)] + "\",\"help\":" + text(spec.help) +
@@ -119,9 +120,9 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
 
     if (!options_.headless) {
         std::string whyNot;
-        context_ = createGlfwContext(config_.title, options_.width, options_.height,
-                                     !options_.benchmark,
-                                     !config_.orbitCamera && !config_.fixedView, whyNot);
+        context_ =
+            createGlfwContext(config_.title, options_.width, options_.height, !options_.benchmark,
+                              !config_.orbitCamera && !config_.fixedView, whyNot);
         if (!context_ && offscreenBackends().empty()) {
             throw Error(config_.name + ": " + whyNot +
                         ", and this build has no offscreen backend (built without OSMesa and EGL)");
@@ -180,7 +181,8 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (Panel::available() && (context_->windowed() || options_.panel || scripted_)) {
         panel_ = std::make_unique<Panel>(config_.flags, [this](const std::string& text) {
             context_->setClipboard(text);
-            if (!context_->windowed()) std::printf("%s: copied: %s\n", config_.name.c_str(), text.c_str());
+            if (!context_->windowed())
+                std::printf("%s: copied: %s\n", config_.name.c_str(), text.c_str());
         });
         panelShown_ = !(context_->windowed() && options_.benchmark);
     }
@@ -204,14 +206,16 @@ void App::useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax,
                     ": useOrbitCamera needs AppConfig::orbitCamera = true (so that --camera is "
                     "checked before any context, and the window leaves the cursor free)");
     }
+    orbitBoundsMin_ = boundsMin;
+    orbitBoundsMax_ = boundsMax;
     if (options_.camera) {
         const CameraStart& given = *options_.camera;
-        orbit_ = OrbitCamera::fromPosition(boundsMin, boundsMax, {given.x, given.y, given.z});
+        orbitEye_ = glm::vec3(given.x, given.y, given.z);
     } else if (start) {
-        orbit_ = OrbitCamera::fromPosition(boundsMin, boundsMax, *start);
-    } else {
-        orbit_ = OrbitCamera::framing(boundsMin, boundsMax, aspect());
+        orbitEye_ = *start;
     }
+    orbit_ = orbitEye_ ? OrbitCamera::fromPosition(boundsMin, boundsMax, *orbitEye_)
+                       : OrbitCamera::framing(boundsMin, boundsMax, aspect());
 }
 
 App::~App() {
@@ -276,7 +280,8 @@ std::optional<std::vector<float>> App::flagNumbers(const std::string& name) cons
 
 glm::vec3 App::flagVec3(const std::string& name) const {
     const auto numbers = flagNumbers(name);
-    if (!numbers || numbers->size() != 3) throw Error(name + " is not three numbers with a default");
+    if (!numbers || numbers->size() != 3)
+        throw Error(name + " is not three numbers with a default");
     return {(*numbers)[0], (*numbers)[1], (*numbers)[2]};
 }
 
@@ -308,8 +313,9 @@ void App::label(const glm::vec3& world, const std::string& text) {
     const glm::vec4 clip = projection() * view() * glm::vec4(world, 1.0f);
     if (clip.w <= 0.0f) return;  // behind the camera
     const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-    label(glm::vec2((0.5f + 0.5f * ndc.x) * float(width()), (0.5f - 0.5f * ndc.y) * float(height())),
-          text);
+    label(
+        glm::vec2((0.5f + 0.5f * ndc.x) * float(width()), (0.5f - 0.5f * ndc.y) * float(height())),
+        text);
 }
 
 void labelSphereGrid(App& app, const SphereGrid& grid, float roughnessOffset,
@@ -323,35 +329,42 @@ void labelSphereGrid(App& app, const SphereGrid& grid, float roughnessOffset,
     const float x = grid.position(0, 0).x - 0.9f * grid.spacing;
     for (int row = 0; row < grid.nrRows; ++row) {
         const glm::vec3 at = grid.position(row, 0);
-        const float metallic = std::clamp(float(row) / float(grid.nrRows) + metallicOffset, 0.0f, 1.0f);
+        const float metallic =
+            std::clamp(float(row) / float(grid.nrRows) + metallicOffset, 0.0f, 1.0f);
         app.label(glm::vec3(x, at.y, at.z), "metallic " + number(metallic));
     }
     const float y = grid.position(0, 0).y - 0.52f * grid.spacing;  // just under the bottom row
     app.label(glm::vec3(x, y, grid.z), "roughness");
     for (int col = 0; col < grid.nrColumns; ++col) {
         const glm::vec3 at = grid.position(0, col);
-        app.label(glm::vec3(at.x, y, at.z),
-                  number(std::clamp(float(col) / float(grid.nrColumns) + roughnessOffset, 0.05f, 1.0f)));
+        app.label(
+            glm::vec3(at.x, y, at.z),
+            number(std::clamp(float(col) / float(grid.nrColumns) + roughnessOffset, 0.05f, 1.0f)));
     }
 }
 
 std::string App::commandLine() const {
     // A value with characters a shell would take apart is quoted.
     auto quoted = [](const std::string& text) {
-        const bool plain = !text.empty() && text.find_first_not_of(
-                                                "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                "0123456789-_.,/+=:") == std::string::npos;
+        const bool plain =
+            !text.empty() && text.find_first_not_of(
+                                 "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                 "0123456789-_.,/+=:") == std::string::npos;
         if (plain) return text;
         std::string out = "'";
         for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
         return out + "'";
     };
-    std::string line = program_ + " --size " + std::to_string(width()) + "x" +
-                       std::to_string(height());
-    const glm::vec3 eye = cameraPosition();
-    if (!config_.fixedView) {
+    std::string line =
+        program_ + " --size " + std::to_string(width()) + "x" + std::to_string(height());
+    const auto camera = [&](const glm::vec3& eye) {
         line += " --camera " + flagNumberText(eye.x) + "," + flagNumberText(eye.y) + "," +
                 flagNumberText(eye.z);
+    };
+    if (orbit_) {
+        if (orbitEye_) camera(*orbitEye_);  // none: the framing, as without --camera
+    } else if (!config_.fixedView) {
+        camera(camera_.position());
     }
     if (!orbit_ && !config_.orbitCamera && !config_.fixedView) {
         line += "," + flagNumberText(camera_.yaw()) + "," + flagNumberText(camera_.pitch());
@@ -458,8 +471,14 @@ bool App::nextFrame() {
 
     if (orbit_) {
         // Left drag orbits, scroll dollies; the cursor is free (AppConfig::orbitCamera).
-        if (input.dragDelta != glm::vec2(0.0f)) orbit_->orbit(input.dragDelta.x, input.dragDelta.y);
-        if (input.scroll != 0.0f) orbit_->dolly(input.scroll);
+        if (input.dragDelta != glm::vec2(0.0f) || input.scroll != 0.0f) {
+            orbit_->orbit(input.dragDelta.x, input.dragDelta.y);
+            orbit_->dolly(input.scroll);
+            // Made again from its eye, as `--camera` of the command line will make it: that
+            // command draws this very view (the eye, a float, is all it gives).
+            orbitEye_ = orbit_->position();
+            orbit_ = OrbitCamera::fromPosition(orbitBoundsMin_, orbitBoundsMax_, *orbitEye_);
+        }
     } else if (!config_.orbitCamera && !config_.fixedView) {
         // (no camera moves in an orbit sample before useOrbitCamera, nor in a fixed view)
         // A held key moves the camera by the frame's time, but by a quarter second's worth at
@@ -530,12 +549,12 @@ void App::updatePanel(const InputFrame& input) {
     const float delta = headless() || deltaTime_ <= 0.0f ? 1.0f / 60.0f : deltaTime_;
     // The controls write into a copy; each changed value is taken as the page's are.
     std::map<std::string, std::string> proposed = options_.sampleFlags;
-    for (const std::string& name : panel_->begin({.cursor = input.cursor,
-                                                  .leftButton = input.leftButton,
-                                                  .scroll = input.scroll,
-                                                  .deltaSeconds = delta},
-                                                 {width(), height()}, proposed, status,
-                                                 panelShown_)) {
+    for (const std::string& name :
+         panel_->begin({.cursor = input.cursor,
+         .leftButton = input.leftButton,
+         .scroll = input.scroll,
+         .deltaSeconds = delta},
+                       {width(), height()}, proposed, status, panelShown_)) {
         const auto value = proposed.find(name);
         setLiveFlag(name, value == proposed.end() ? std::nullopt
                                                   : std::optional<std::string>(value->second));
@@ -597,9 +616,9 @@ void App::endFrame() {
         finishGl();
         const double now = context_->seconds();
         if (frameIndex_ == 0) {
-            firstFrameSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                               processStart())
-                                     .count();
+            firstFrameSeconds_ =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - processStart())
+                    .count();
         } else {
             frameMilliseconds_.push_back((now - lastFrameEnd_) * 1000.0);
         }

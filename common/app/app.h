@@ -180,6 +180,11 @@ private:
     float pausedTime_ = 0.0f;
     FlyCamera camera_;
     std::optional<OrbitCamera> orbit_;
+    // The orbit camera's bounds, and the eye its state was made from (OrbitCamera::fromPosition):
+    // the --camera its command line gives, which makes the very same state again. None while it
+    // frames the model as it does without --camera.
+    glm::vec3 orbitBoundsMin_{0.0f}, orbitBoundsMax_{0.0f};
+    std::optional<glm::vec3> orbitEye_;
 
     int framesWanted_ = 0;  // 0: until the window closes
     int frameIndex_ = -1;

@@ -281,18 +281,30 @@ FlagSpec FlagSpec::refusing(std::function<std::string(const std::string& value)>
     return spec;
 }
 
-std::string flagNumberText(double value) {
-    // The shortest of %.1g ... %.17g that parses back to the very same double, with at least
-    // the digits of its whole part, so that -90 stays -90 (not -9e+01).
+namespace {
+// The shortest of %.1g ... %.<most>g that `same` takes for the value, with at least the digits
+// of its whole part, so that -90 stays -90 (not -9e+01).
+template <typename Same>
+std::string shortestText(double value, int most, Same same) {
     const double magnitude = std::abs(value);
     const int wholeDigits =
         magnitude >= 1.0 && magnitude < 1e17 ? int(std::floor(std::log10(magnitude))) + 1 : 1;
     char text[32];
-    for (int digits = 1; digits <= 17; ++digits) {
+    for (int digits = 1; digits <= most; ++digits) {
         std::snprintf(text, sizeof text, "%.*g", std::max(digits, wholeDigits), value);
-        if (std::strtod(text, nullptr) == value) break;
+        if (same(std::strtod(text, nullptr))) break;
     }
     return text;
+}
+}  // namespace
+
+std::string flagNumberText(double value) {
+    return shortestText(value, 17, [&](double read) { return read == value; });
+}
+
+std::string flagNumberText(float value) {
+    // read as the flags read it: a double, then stored as a float
+    return shortestText(double(value), 9, [&](double read) { return float(read) == value; });
 }
 
 int parseIntFlag(const std::string& flag, const std::string& value, int min, int max) {

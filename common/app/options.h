@@ -62,8 +62,10 @@ struct FlagSpec {
     FlagSpec refusing(std::function<std::string(const std::string& value)> why) const;
 };
 
-// A number as a flag's text: the shortest that reads back as the same double ("0.3", "1e-05").
+// A number as a flag's text: the shortest that reads back as the same double ("0.3", "1e-05"),
+// or, for a float, as the same float (2.2f is "2.2", not "2.200000047683716").
 std::string flagNumberText(double value);
+std::string flagNumberText(float value);
 
 // --camera x,y,z[,yaw,pitch]: a start pose for the fly camera (yaw/pitch in degrees).
 struct CameraStart {

@@ -6,6 +6,7 @@
 // flag, near the value under the mouse.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -58,9 +59,9 @@ PanelRun runScripted(const std::string& sample, const std::vector<std::string>& 
     }
     PanelRun result;
     result.image = dir / (name + ".png");
-    std::vector<std::string> argv = {sample, "--headless", "--frames",
-                                     std::to_string(script.size() + 1), "--output",
-                                     result.image.string()};
+    std::vector<std::string> argv = {sample,     "--headless",
+                                     "--frames", std::to_string(script.size() + 1),
+                                     "--output", result.image.string()};
     argv.insert(argv.end(), kSize.begin(), kSize.end());
     argv.insert(argv.end(), args.begin(), args.end());
     result.run = runSample(argv, {.setEnv = {{"PBR_PANEL_SCRIPT", scriptPath.string()}}});
@@ -142,11 +143,11 @@ TEST(Panel, DraggingASliderIsTheFlagsValue) {
     ASSERT_TRUE(controls.count("--roughness-offset")) << "no slider for --roughness-offset";
     const Rect slider = controls.at("--roughness-offset");
     // Press on the grab (0 sits in the middle of -1..1) and drag it to 80 % of the way.
-    const PanelRun changed = runScripted(
-        "01_lighting",
-        {"-", hover(slider.at(0.5)), hold(slider.at(0.5)), hold(slider.at(0.65)),
-         hold(slider.at(0.8)), hover(slider.at(0.8))},
-        dir, "dragged");
+    const PanelRun changed =
+        runScripted("01_lighting",
+                    {"-", hover(slider.at(0.5)), hold(slider.at(0.5)), hold(slider.at(0.65)),
+                     hold(slider.at(0.8)), hover(slider.at(0.8))},
+                    dir, "dragged");
     std::printf("after the drag: %s\n", changed.command.c_str());
     const auto value = valueIn(changed.command, "--roughness-offset");
     ASSERT_TRUE(value) << "the drag did not set --roughness-offset: " << changed.command;
@@ -162,10 +163,9 @@ TEST(Panel, AStepperStepsTheFlag) {
     ASSERT_TRUE(controls.count("--lights -")) << "no stepper for --lights";
     const std::string minus = controls.at("--lights -").at(0.5);
     // Two clicks on "-": 4 lights, then 3, then 2.
-    const PanelRun changed =
-        runScripted("01_lighting",
-                    {"-", hover(minus), hold(minus), hover(minus), hold(minus), hover(minus)}, dir,
-                    "stepped");
+    const PanelRun changed = runScripted(
+        "01_lighting", {"-", hover(minus), hold(minus), hover(minus), hold(minus), hover(minus)},
+        dir, "stepped");
     std::printf("after two clicks: %s\n", changed.command.c_str());
     EXPECT_EQ(valueIn(changed.command, "--lights"), "2") << changed.command;
     expectFrameIsTheCommands(changed, dir);
@@ -217,6 +217,30 @@ TEST(Panel, TheMouseOverThePanelLeavesTheCameraAlone) {
         runScripted("01_lighting", {"-", "500 300 0", "500 300 1", "540 300 1"}, dir, "outside");
     EXPECT_NE(valueIn(outside.command, "--camera"), "0,0,23,-90,0")
         << "a drag over the picture should turn the camera: " << outside.command;
+}
+
+// A moved camera's command line draws the very same picture: the fly camera's pose (01) and the
+// orbit camera's (07, which once replayed 339 pixels one level off), each number the shortest
+// text that reads back to the same float (never "2.200000047683716").
+TEST(Panel, AMovedCamerasCommandDrawsTheSamePicture) {
+    const fs::path dir = testOutputDir("panel_camera_replay");
+    for (const std::string sample : {"01_lighting", "07_gltf_metallic_roughness"}) {
+        const PanelRun moved = runScripted(
+            sample, {"-", "500 300 0", "500 300 1", "537 289 1", "561 262 1"}, dir, sample);
+        ASSERT_EQ(moved.run.exitCode, 0) << moved.run.err;
+        const std::optional<std::string> camera = valueIn(moved.command, "--camera");
+        ASSERT_TRUE(camera) << "the drag did not move the camera: " << moved.command;
+        std::printf("%s after the drag: %s\n", sample.c_str(), moved.command.c_str());
+        std::istringstream numbers(*camera);
+        for (std::string number; std::getline(numbers, number, ',');) {
+            const size_t digits = std::count_if(number.begin(), number.end(),
+                                                [](char c) { return c >= '0' && c <= '9'; });
+            EXPECT_LE(digits, 9u) << number << " in " << moved.command;
+        }
+        EXPECT_TRUE(readBytes(moved.image) ==
+                    drawCommand(moved.command, dir / (sample + "_command.png")))
+            << sample << ": the picture after the drag is not what `" << moved.command << "` draws";
+    }
 }
 
 }  // namespace

@@ -1,6 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
+#include <string_view>
 
 #include "app/options.h"
 #include "base/error.h"
@@ -28,6 +35,43 @@ std::string errorOf(std::vector<std::string> args) {
         return e.what();
     }
     return "no error";
+}
+
+// "0.0012" 2, "-90" 1, "2.5e-07" 2.
+size_t significantDigits(std::string_view text) {
+    std::string digits;
+    for (const char c : text.substr(0, text.find_first_of("eE")))
+        if (c >= '0' && c <= '9') digits += c;
+    const size_t first = digits.find_first_not_of('0');
+    if (first == std::string::npos) return 0;
+    return digits.find_last_not_of('0') - first + 1;
+}
+
+// A float flag value as the shortest text that reads back (through the flags' double) to the
+// same float: the values of a float, not of the double it widens to. std::to_chars, the standard
+// library's own shortest round trip, is the independent reference for the digits.
+TEST(Options, FloatsAreWrittenShortest) {
+    EXPECT_EQ(flagNumberText(2.2f), "2.2");
+    EXPECT_EQ(flagNumberText(-90.0f), "-90");
+    EXPECT_EQ(flagNumberText(0.1f), "0.1");
+    EXPECT_EQ(flagNumberText(2.2), "2.2");
+    EXPECT_EQ(flagNumberText(double(2.2f)), "2.200000047683716");  // the double it widens to
+    std::uint32_t bits = 0x3f800000u;  // 1.0f, then every 9973rd float from there up
+    for (int i = 0; i < 20000; ++i, bits += 9973u * 4099u) {
+        float value = 0.0f;
+        std::memcpy(&value, &bits, sizeof value);
+        if (!std::isfinite(value)) continue;
+        const std::string text = flagNumberText(value);
+        EXPECT_EQ(float(std::strtod(text.c_str(), nullptr)), value) << text;
+        char reference[32];
+        const auto end = std::to_chars(reference, reference + sizeof reference, value).ptr;
+        const std::string_view shortest(reference, size_t(end - reference));
+        // (from 1e7 up the text keeps every digit of the whole part: 123456784, not 1.2345678e8)
+        if (std::abs(value) < 1e7f) {
+            EXPECT_LE(significantDigits(text), significantDigits(shortest))
+                << text << " against " << shortest;
+        }
+    }
 }
 
 TEST(Options, Defaults) {
