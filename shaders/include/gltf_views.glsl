@@ -25,6 +25,9 @@ vec3 gltfView(int which, SurfaceMaterial m, vec3 V)
     if (which == VIEW_OCCLUSION) return encodedAs(vec3(m.occlusion));
     if (which == VIEW_EMISSIVE) return encodedAs(m.emissive);
     if (which == VIEW_F0) return encodedAs(mix(m.F0, m.baseColor, m.metallic));
+    // KHR_materials_unlit: no light takes part in the picture (the base colour is it), so every
+    // term of the lighting is 0 there.
+    if (unlit) return vec3(0.0);
 
     float D = 0.0, G = 0.0, NdotL = 0.0;
     vec3 F = vec3(0.0), specular = vec3(0.0), diffuse = vec3(0.0), direct = vec3(0.0);

@@ -472,6 +472,40 @@ TEST(Reference, Gltf07TermViewsMatchTheCpu) {
     }
 }
 
+// An unlit material (KHR_materials_unlit) takes no light: its inputs show as any material's, and
+// every term of the lighting is 0 (black) there. 03's showcase, all four objects unlit, through
+// 07: wherever the base colour view shows an object, the D and direct views are black; and the
+// program uses its `unlit` uniform in every view (no note that it is inactive).
+TEST(Reference, Gltf07UnlitMaterialsHaveNoLightingTerms) {
+    const fs::path dir = testOutputDir("reference_07_unlit_views");
+    std::map<std::string, Image> views;
+    for (const std::string view : {"base-color", "d", "direct"}) {
+        const SampleRender render = renderSample(
+            "07_gltf_metallic_roughness", dir / (view + ".png"),
+            {"--model", (modelDir() / "unlit_showcase.gltf").string(), "--msaa", "0", "--size",
+             "320x180", "--view", view});
+        ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+        EXPECT_EQ(render.run.err.find("no active uniform"), std::string::npos) << render.run.err;
+        views[view] = readImage(render.image, 3);
+    }
+    for (const std::string view : {"d", "direct"}) {
+        int objects = 0, black = 0;
+        const Image& terms = views[view];
+        for (size_t p = 0; p < terms.pixels.size(); p += 3) {
+            bool object = false, dark = true;
+            for (size_t c = 0; c < 3; ++c) {
+                object = object || views["base-color"].pixels[p + c] != terms.pixels[p + c];
+                dark = dark && terms.pixels[p + c] == 0;
+            }
+            objects += object;
+            black += object && dark;
+        }
+        std::printf("--view %s: %d of %d object pixels black\n", view.c_str(), black, objects);
+        EXPECT_GT(objects, 2000) << view;
+        EXPECT_EQ(black, objects) << view;
+    }
+}
+
 // 07's image-based light's views on the showcase's spheres in the linear sky (tests/reference/
 // linear_sky.h: the irradiance, the prefiltered levels and the LUT in closed form), punctual
 // lights off, no tone mapping: the reads as x / (1 + x) (the LUT's scale and bias as they are),
