@@ -269,7 +269,8 @@ material sets are one file beside the pages (<code>assets/materials.js</code>), 
 pages that show them, and the pages of each layer of the helper library share one program. A page takes the sample's flags in its
 address: <code>05_ibl_specular.html?--textured&amp;--camera=0,0,8</code>
 (<code>?--help</code> lists them). Click a picture to look around: WASD moves, the mouse looks,
-scroll zooms, Esc ends the run.</p>
+scroll zooms, Esc ends the run; in the glTF viewers (07, 08) a drag orbits the model instead.
+Each page's header says which.</p>
 {chr(10).join(entries)}
 </body></html>
 """

@@ -191,6 +191,12 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     }
 #ifdef PBR_WEBGL
     web::declareFlags(flagsJson(config_.flags, options_));  // the page's own controls
+    web::mouseHint(config_.orbitCamera
+                       ? "drag the picture to orbit the model, scroll dollies, Esc ends the run"
+                   : config_.fixedView
+                       ? "Esc ends the run"
+                       : "click the picture to look around (WASD moves, scroll zooms, Esc ends "
+                         "the run)");
 #endif
     checkGlErrors("start-up");
 }

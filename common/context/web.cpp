@@ -47,6 +47,12 @@ EM_JS(void, pbr_first_frame_drawn, (), {
     if (Module["pbrFirstFrame"]) Module["pbrFirstFrame"]();
 });
 
+// The header's mouse and keys line (web/shell.html's #pbr-hint).
+EM_JS(void, pbr_mouse_hint, (const char* text), {
+    var hint = document.getElementById("pbr-hint");
+    if (hint) hint.textContent = UTF8ToString(text);
+});
+
 // The controls: Module.pbrDeclareFlags builds them; their changes queue up in the page as
 // lines "name<TAB>1<TAB>value" (1: given, 0: a switch turned off), fetched once a frame.
 EM_JS(void, pbr_declare_flags, (const char* json), {
@@ -82,6 +88,10 @@ void showLabels(int width, int height) {
 
 void declareFlags(const std::string& json) {
     pbr_declare_flags(json.c_str());
+}
+
+void mouseHint(const std::string& text) {
+    pbr_mouse_hint(text.c_str());
 }
 
 std::vector<FlagChange> takeFlagChanges() {

@@ -42,6 +42,9 @@ struct FlagChange {
 };
 void declareFlags(const std::string& json);
 std::vector<FlagChange> takeFlagChanges();
+// The header's line on how the picture takes the mouse and keys (the fly camera's, or the orbit
+// camera's).
+void mouseHint(const std::string& text);
 // Labels over the picture, as the window's panel layer draws them (App::label): those of the
 // frame being drawn, at pixels of the picture from its top-left; shown when the frame is.
 void label(float x, float y, const std::string& text);

@@ -93,6 +93,8 @@ PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
         } else if (name == "said.txt") {
             std::istringstream lines(readBytes(entry.path()));
             for (std::string line; std::getline(lines, line);) page.said.push_back(line);
+        } else if (name == "hint.txt") {
+            page.hint = readBytes(entry.path());
         } else if (name == "exit.txt") {
             page.exitCode = std::atoi(readBytes(entry.path()).c_str());
         } else if (entry.is_regular_file() && name.front() != '.') {

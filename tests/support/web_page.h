@@ -20,6 +20,7 @@ struct PageRun {
     std::map<std::string, std::string> files;  // name -> bytes
     std::string address;  // the page's query string at the end (its controls keep it current)
     std::vector<std::string> said;  // every text the page's header showed, in order
+    std::string hint;               // the header's line on the mouse and keys
 };
 
 // Why the web tests cannot run on this machine (no browser, no web build), or nullopt.

@@ -36,8 +36,8 @@ const GoldenGate kWebToNativeGate{.channelThreshold = 8, .maxFractionOver = 0.00
 // PSNR 43.9 dB; --view roughness 0.71 %, 40.4 dB; --tonemap aces 0.57 %, 43.7 dB; 08 0.13 %,
 // 51.3 dB. The gate takes 1 % and 39 dB; 07 with --exposure 1.1 fails it
 // (Web.GltfGateRejectsSmallChanges). The page's own golden keeps the native gate.
-const GoldenGate kWebToNativeGltfGate{.channelThreshold = 8, .maxFractionOver = 0.01,
-                                      .minPsnr = 39.0};
+const GoldenGate kWebToNativeGltfGate{
+    .channelThreshold = 8, .maxFractionOver = 0.01, .minPsnr = 39.0};
 const GoldenGate& webToNativeGate(const std::string& sample) {
     return sample.starts_with("07_") || sample.starts_with("08_") ? kWebToNativeGltfGate
                                                                   : kWebToNativeGate;
@@ -57,8 +57,8 @@ struct WebRender {
     fs::path image;
     fs::path canvas;  // `shown` only
 };
-WebRender renderPage(const std::string& sample, std::vector<std::string> args,
-                     const fs::path& dir, bool shown = false) {
+WebRender renderPage(const std::string& sample, std::vector<std::string> args, const fs::path& dir,
+                     bool shown = false) {
     if (shown) {
         // one frame at the time a headless run draws (03 spins its objects with time)
         args.insert(args.end(), {"--frames", "1", "--time", "0", "--output", sample + ".png"});
@@ -101,6 +101,12 @@ TEST_P(WebGolden, MatchesGolden) {
     PBR_NEED_WEB(golden.sample);
     const fs::path dir = testOutputDir("web_golden_" + golden.golden);
     const WebRender render = renderPage(golden.sample, golden.args, dir, true);
+    // the header says how this sample's picture takes the mouse (07 and 08 orbit, 06 is still)
+    const bool orbits = golden.sample.starts_with("07_") || golden.sample.starts_with("08_");
+    const std::string moves = orbits                             ? "drag the picture to orbit"
+                              : golden.sample.starts_with("06_") ? "Esc ends the run"
+                                                                 : "WASD moves";
+    EXPECT_NE(render.page.hint.find(moves), std::string::npos) << render.page.hint;
     if (!fs::exists(render.image) || !fs::exists(render.canvas)) return;
     const Image canvas = readImage(render.canvas, 3);
     const GoldenVerdict shown = judge(canvas, readImage(render.image, 3), kCanvasGate);
@@ -112,8 +118,8 @@ TEST_P(WebGolden, MatchesGolden) {
               webToNativeGate(golden.sample));
     std::printf("%s: the canvas against the native golden: %s\n", golden.golden.c_str(),
                 canvasNative.summary.c_str());
-    EXPECT_TRUE(canvasNative.pass) << "the canvas is not the native picture: "
-                                   << canvasNative.summary;
+    EXPECT_TRUE(canvasNative.pass)
+        << "the canvas is not the native picture: " << canvasNative.summary;
     const Image image = readImage(render.image, 3);
     if (golden.minNonBlank > 0.0) {
         EXPECT_GT(double(pixelsUnlikeCorner(image)) / (double(image.width) * image.height),
@@ -122,9 +128,9 @@ TEST_P(WebGolden, MatchesGolden) {
     EXPECT_TRUE(matchesGolden("web/" + golden.golden, asSampleRender(render)))
         << "the page printed:\n"
         << render.page.log;
-    const GoldenVerdict native = judge(
-        image, readImage(fs::path(PBR_GOLDEN_DIR) / (golden.golden + ".png"), 3),
-        webToNativeGate(golden.sample));
+    const GoldenVerdict native =
+        judge(image, readImage(fs::path(PBR_GOLDEN_DIR) / (golden.golden + ".png"), 3),
+              webToNativeGate(golden.sample));
     std::printf("%s against the native golden: %s\n", golden.golden.c_str(),
                 native.summary.c_str());
     EXPECT_TRUE(native.pass) << "the web picture is not the native one: " << native.summary;
@@ -158,8 +164,7 @@ TEST(Web, NativeGateRejectsSmallChanges) {
 // The glTF scene's looser gate still sees a small real change: 07 a tenth brighter.
 TEST(Web, GltfGateRejectsSmallChanges) {
     PBR_NEED_WEB("07_gltf_metallic_roughness");
-    const Image golden =
-        readImage(fs::path(PBR_GOLDEN_DIR) / "07_gltf_metallic_roughness.png", 3);
+    const Image golden = readImage(fs::path(PBR_GOLDEN_DIR) / "07_gltf_metallic_roughness.png", 3);
     const fs::path dir = testOutputDir("web_gate_gltf_exposure");
     const WebRender render = renderPage("07_gltf_metallic_roughness", {"--exposure", "1.1"}, dir);
     if (!fs::exists(render.image)) return;
@@ -209,15 +214,15 @@ TEST(Web, TwoRunsGiveTheSameBytes) {
     for (const char* run : {"first", "second"}) {
         const fs::path dir = testOutputDir(std::string("web_repeat_") + run);
         // --benchmark, for its precompute figure: the maps were computed, not found
-        const PageRun page = runPage(sample,
-                                     {"--headless", "--size", "320x180", "--hdr",
-                                      "/resources/environments/sunny_courtyard.hdr",
-                                      "--benchmark", "--frames", "1"},
-                                     dir);
+        const PageRun page =
+            runPage(sample,
+                    {"--headless", "--size", "320x180", "--hdr",
+                     "/resources/environments/sunny_courtyard.hdr", "--benchmark", "--frames", "1"},
+                    dir);
         ASSERT_EQ(page.exitCode, std::optional<int>(0)) << page.log;
         std::smatch precompute;
-        ASSERT_TRUE(std::regex_search(page.log, precompute,
-                                      std::regex("\"precompute_s\":([0-9.]+)")))
+        ASSERT_TRUE(
+            std::regex_search(page.log, precompute, std::regex("\"precompute_s\":([0-9.]+)")))
             << page.log;
         EXPECT_GT(std::stod(precompute[1]), 0.0) << "the page computed no map: " << page.log;
         EXPECT_EQ(page.files.count("sunny_courtyard.prefiltered.ktx"), 1u) << page.log;
@@ -225,8 +230,7 @@ TEST(Web, TwoRunsGiveTheSameBytes) {
         // the header named each map while the page computed it
         for (const std::string map : {"irradiance", "prefiltered"}) {
             const std::string step = "computing sunny_courtyard." + map + ".ktx";
-            EXPECT_NE(std::find(page.said.begin(), page.said.end(), step), page.said.end())
-                << step;
+            EXPECT_NE(std::find(page.said.begin(), page.said.end(), step), page.said.end()) << step;
         }
         if (first.empty()) {
             first = page.files;
@@ -261,13 +265,15 @@ TEST(Web, AModelThePageDoesNotCarryIsOneLine) {
     EXPECT_EQ(page.exitCode, std::optional<int>(2)) << page.log;
     std::string log = page.log;
     while (!log.empty() && log.back() == '\n') log.pop_back();
-    EXPECT_EQ(log, "error: --model: /home/me/DamagedHelmet.glb: a page draws only the models the "
-                   "build packed into it (no glTF reader in the browser): "
-                   "/resources/models/pbr_showcase.gltf");
+    EXPECT_EQ(log,
+              "error: --model: /home/me/DamagedHelmet.glb: a page draws only the models the "
+              "build packed into it (no glTF reader in the browser): "
+              "/resources/models/pbr_showcase.gltf");
     EXPECT_TRUE(page.files.empty());
-    const PageRun byName = runPage("07_gltf_metallic_roughness",
-                                   {"--headless", "--size", "64x36", "--model", "pbr_showcase.gltf"},
-                                   testOutputDir("web_model_by_name"));
+    const PageRun byName =
+        runPage("07_gltf_metallic_roughness",
+                {"--headless", "--size", "64x36", "--model", "pbr_showcase.gltf"},
+                testOutputDir("web_model_by_name"));
     EXPECT_EQ(byName.exitCode, std::optional<int>(0)) << byName.log;
 }
 
@@ -282,9 +288,12 @@ TEST(Web, TheFrameLoopRunsInThePage) {
         "04_ibl_irradiance", {"--frames", "3", "--size", "320x180", "--output", "last.png"}, dir);
     EXPECT_EQ(page.exitCode, std::optional<int>(0)) << page.log;
     const std::vector<std::string> said = {
-        "starting", "loading assets/environment.js", "starting",
+        "starting",
+        "loading assets/environment.js",
+        "starting",
         "drawing the first frame (WebGL on the CPU, without a GPU: this takes a second or more)",
-        "running", "exit 0"};
+        "running",
+        "exit 0"};
     EXPECT_EQ(page.said, said);
     ASSERT_EQ(page.files.count("last.png"), 1u) << page.log;
     EXPECT_NE(page.log.find("(320x180, msaa 4, glfw, "), std::string::npos) << page.log;
@@ -343,11 +352,12 @@ class WebControls : public ::testing::TestWithParam<LiveControl> {};
 TEST_P(WebControls, ChangeThePageLive) {
     const LiveControl& control = GetParam();
     PBR_NEED_WEB(control.sample);
-    const std::vector<std::string> args = {"--frames", "3", "--size", "320x180", "--output",
-                                           "last.png"};
+    const std::vector<std::string> args = {"--frames", "3",        "--size",
+                                           "320x180",  "--output", "last.png"};
     const std::string name = control.sample.substr(0, 2);
-    const PageRun changed = runPage(control.sample, args, testOutputDir("web_controls_changed_" + name),
-                                    "set=" + control.flag + ":" + control.value);
+    const PageRun changed =
+        runPage(control.sample, args, testOutputDir("web_controls_changed_" + name),
+                "set=" + control.flag + ":" + control.value);
     ASSERT_EQ(changed.exitCode, std::optional<int>(0)) << changed.log;
     std::vector<std::string> withFlag = args;
     withFlag.insert(withFlag.end(), {control.flag, control.value});
@@ -359,8 +369,8 @@ TEST_P(WebControls, ChangeThePageLive) {
     ASSERT_TRUE(changed.files.count("last.png") && started.files.count("last.png") &&
                 untouched.files.count("last.png"));
     EXPECT_TRUE(changed.files.at("last.png") == started.files.at("last.png"))
-        << "the page after the control's change differs from the page opened with "
-        << control.flag << " " << control.value;
+        << "the page after the control's change differs from the page opened with " << control.flag
+        << " " << control.value;
     EXPECT_FALSE(changed.files.at("last.png") == untouched.files.at("last.png"))
         << "the control's change did not show";
     std::printf("the address after the change: %s\n", changed.address.c_str());
@@ -410,7 +420,8 @@ TEST(Web, EveryPageWeighsAtMost32MBAndCarriesNothingTwice) {
     for (const GoldenCase& golden : webGoldenCases()) samples.insert(golden.sample);
     // the bundles a page loads (["assets/NAME.js", "FLAG"]) and the program it runs
     // (<script src="assets/LAYER_samples.js">, shared by the pages of a layer of common/)
-    const std::regex bundle(R"re(\["(assets/[^"]+\.js)", "([^"]*)"\]|<script src="(assets/[^"]+\.js)")re");
+    const std::regex bundle(
+        R"re(\["(assets/[^"]+\.js)", "([^"]*)"\]|<script src="(assets/[^"]+\.js)")re");
     for (const std::string& sample : samples) {
         const std::string page = text(webPage(sample));
         std::vector<std::string> parts = {page};
@@ -431,11 +442,13 @@ TEST(Web, EveryPageWeighsAtMost32MBAndCarriesNothingTwice) {
             for (size_t at = part.find("data.push(\""); at != std::string::npos;
                  at = part.find("data.push(\"", at + 1)) {
                 const size_t start = at + 11, end = part.find('"', start);
-                ++contents[std::hash<std::string_view>{}(std::string_view(part).substr(start, end - start))];
+                ++contents[std::hash<std::string_view>{}(
+                    std::string_view(part).substr(start, end - start))];
             }
         }
         EXPECT_GT(contents.size(), 0u) << sample;
-        for (const auto& [hash, times] : contents) EXPECT_EQ(times, 1) << sample << ": a file carried " << times << " times";
+        for (const auto& [hash, times] : contents)
+            EXPECT_EQ(times, 1) << sample << ": a file carried " << times << " times";
     }
 }
 
