@@ -423,6 +423,7 @@ bool App::nextFrame() {
         const InputFrame scripted = scriptedAt(frameIndex_), before = scriptedAt(frameIndex_ - 1);
         input.cursor = scripted.cursor;
         input.leftButton = scripted.leftButton;
+        input.leftPresses = scripted.leftPresses;
         if (scripted.cursor.x >= 0.0f && before.cursor.x >= 0.0f) {
             input.mouseDelta = {scripted.cursor.x - before.cursor.x,
                                 before.cursor.y - scripted.cursor.y};
@@ -558,6 +559,7 @@ void App::updatePanel(const InputFrame& input) {
     for (const std::string& name :
          panel_->begin({.cursor = input.cursor,
          .leftButton = input.leftButton,
+         .leftPresses = input.leftPresses,
          .scroll = input.scroll,
          .deltaSeconds = delta},
                        {width(), height()}, proposed, status, panelShown_)) {

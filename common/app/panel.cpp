@@ -229,6 +229,7 @@ std::vector<std::string> Panel::begin(const PanelInput& input, glm::ivec2 size,
         PanelStatus first = status;
         PanelInput still = input;
         still.leftButton = false;
+        still.leftPresses = 0;
         layoutFrame(still, size, values, first, true);
         end();
     }
@@ -261,7 +262,9 @@ std::vector<std::string> Panel::layoutFrame(const PanelInput& input, glm::ivec2 
     io.MousePos = input.cursor.x < 0.0f || input.cursor.y < 0.0f
                       ? ImVec2(-FLT_MAX, -FLT_MAX)
                       : ImVec2(input.cursor.x, input.cursor.y);
-    io.MouseDown[0] = input.leftButton;
+    // A click between two frames is down in this one and up in the next: Dear ImGui 1.86 reads
+    // the button's state once a frame, and would see neither.
+    io.MouseDown[0] = input.leftButton || input.leftPresses > 0;
     io.MouseWheel = input.scroll;
 
     ImGui_ImplOpenGL3_NewFrame();

@@ -30,6 +30,7 @@ namespace pbr {
 struct PanelInput {
     glm::vec2 cursor{-1.0f};  // in framebuffer pixels from the top-left; negative: not over it
     bool leftButton = false;
+    int leftPresses = 0;  // since the last frame (InputFrame::leftPresses)
     float scroll = 0.0f;
     float deltaSeconds = 1.0f / 60.0f;  // since the last frame (> 0)
 };

@@ -23,8 +23,10 @@ std::vector<InputFrame> parsePanelScript(std::string_view text, const std::strin
             int button = 0;
             std::string rest;
             if (!(fields >> frame.cursor.x >> frame.cursor.y >> button) || (fields >> rest) ||
-                (button != 0 && button != 1)) {
-                throw Error(where + "' is not 'x y button' (button 0 or 1) or '-'");
+                button < 0 || button > 2) {
+                throw Error(where +
+                            "' is not 'x y button' (button 0 up, 1 held, 2 clicked between "
+                            "frames) or '-'");
             }
             // A cursor at 3e38 is a number, but the move to the next one would be infinite.
             if (!(std::abs(frame.cursor.x) <= kMaxScriptCursor) ||
@@ -32,6 +34,7 @@ std::vector<InputFrame> parsePanelScript(std::string_view text, const std::strin
                 throw Error(where + "': the cursor lies further than 1e6 pixels from the picture");
             }
             frame.leftButton = button == 1;
+            frame.leftPresses = button == 2 ? 1 : 0;
         }
         frames.push_back(frame);
     }

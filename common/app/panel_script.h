@@ -14,7 +14,8 @@ namespace pbr {
 inline constexpr float kMaxScriptCursor = 1.0e6f;
 
 // The frames of a panel script's text: a line "x y button" (framebuffer pixels from the top-left,
-// the left button 0 or 1) is the mouse there, "-" a frame without the mouse. Frames past the last
+// the left button 0 up, 1 held, 2 pressed and released since the last frame: a click shorter than
+// a frame) is the mouse there, "-" a frame without the mouse. Frames past the last
 // line have none. Throws Error("<name>:<line>: ...") for any other line.
 std::vector<InputFrame> parsePanelScript(std::string_view text, const std::string& name);
 

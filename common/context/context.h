@@ -18,6 +18,9 @@ struct InputFrame {
     float scroll = 0.0f;
     glm::vec2 cursor{-1.0f};  // framebuffer pixels from the top-left; negative: unknown
     bool leftButton = false;  // held
+    // Presses of the left button since the last frame: at a software GL's 1-3 frames a second, a
+    // click (press and release) often falls between two frames, leftButton up at both.
+    int leftPresses = 0;
     bool togglePanel = false;  // Tab
     bool screenshot = false;  // F12
     bool reload = false;      // R

@@ -34,6 +34,10 @@ public:
         glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double x, double y) {
             static_cast<GlfwContext*>(glfwGetWindowUserPointer(w))->onCursor(x, y);
         });
+        glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int button, int action, int) {
+            if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS)
+                ++static_cast<GlfwContext*>(glfwGetWindowUserPointer(w))->pending_.leftPresses;
+        });
         glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double y) {
             static_cast<GlfwContext*>(glfwGetWindowUserPointer(w))->pending_.scroll += float(y);
         });
