@@ -174,6 +174,13 @@ TEST(Panel, AStepperStepsTheFlag) {
     std::printf("after two clicks: %s\n", changed.command.c_str());
     EXPECT_EQ(valueIn(changed.command, "--lights"), "2") << changed.command;
     expectFrameIsTheCommands(changed, dir);
+    // Down to the flag's least, 0 (no light: the ambient term alone), where "-" stops.
+    std::vector<std::string> down = {"-"};
+    for (int i = 0; i < 5; ++i) down.insert(down.end(), {hover(minus), hold(minus)});
+    down.push_back(hover(minus));
+    const PanelRun least = runScripted("01_lighting", down, dir, "least");
+    EXPECT_EQ(valueIn(least.command, "--lights"), "0") << least.command;
+    expectFrameIsTheCommands(least, dir);
 }
 
 TEST(Panel, AComboBoxChoiceIsTheFlagsWord) {
