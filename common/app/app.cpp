@@ -424,6 +424,7 @@ bool App::nextFrame() {
         input.cursor = scripted.cursor;
         input.leftButton = scripted.leftButton;
         input.leftPresses = scripted.leftPresses;
+        input.scroll = scripted.scroll;
         if (scripted.cursor.x >= 0.0f && before.cursor.x >= 0.0f) {
             input.mouseDelta = {scripted.cursor.x - before.cursor.x,
                                 before.cursor.y - scripted.cursor.y};

@@ -22,11 +22,15 @@ std::vector<InputFrame> parsePanelScript(std::string_view text, const std::strin
             std::istringstream fields(line);
             int button = 0;
             std::string rest;
-            if (!(fields >> frame.cursor.x >> frame.cursor.y >> button) || (fields >> rest) ||
-                button < 0 || button > 2) {
+            bool read = bool(fields >> frame.cursor.x >> frame.cursor.y >> button);
+            if (read && !(fields >> std::ws).eof()) read = bool(fields >> frame.scroll);
+            if (!read || (fields >> rest) || button < 0 || button > 2) {
                 throw Error(where +
-                            "' is not 'x y button' (button 0 up, 1 held, 2 clicked between "
-                            "frames) or '-'");
+                            "' is not 'x y button [scroll]' (button 0 up, 1 held, 2 clicked "
+                            "between frames; scroll steps, up positive) or '-'");
+            }
+            if (!(std::abs(frame.scroll) <= kMaxScriptScroll)) {
+                throw Error(where + "': a scroll of more than 100 steps in a frame");
             }
             // A cursor at 3e38 is a number, but the move to the next one would be infinite.
             if (!(std::abs(frame.cursor.x) <= kMaxScriptCursor) ||

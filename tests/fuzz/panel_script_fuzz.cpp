@@ -1,5 +1,5 @@
 // PBR_PANEL_SCRIPT (app/panel_script.h): any text either gives a frame for each of its lines,
-// the mouse at a finite place within reach of the picture or absent, or is refused in one line
+// the mouse at a finite place within reach of the picture or absent, its scroll finite and bounded, or is refused in one line
 // naming the script and the line.
 #include "app/panel_script.h"
 #include "fuzz_check.h"
@@ -25,6 +25,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
             fuzz::expect(std::isfinite(v) && std::abs(v) <= kMaxScriptCursor,
                          "the cursor finite, within reach of the picture");
         }
+        fuzz::expect(std::isfinite(frame.scroll) && std::abs(frame.scroll) <= kMaxScriptScroll,
+                     "a finite scroll of at most 100 steps");
+        fuzz::expect(frame.leftPresses == 0 || !frame.leftButton,
+                     "a click between frames leaves the button up");
         // What the App makes of two frames: the move between them is finite.
         fuzz::expect(std::isfinite(frame.cursor.x - frames.front().cursor.x) &&
                          std::isfinite(frame.cursor.y - frames.front().cursor.y),

@@ -233,6 +233,20 @@ TEST(Panel, ACheckboxSwitchesTheFlag) {
     expectFrameIsTheCommands(changed, dir);
 }
 
+// A scroll zooms the fly camera (its field of view), and the command line says so: the frame after
+// the scroll is what that command draws (--fov), not the unzoomed picture.
+TEST(Panel, AScrolledFieldOfViewIsOnTheCommandLine) {
+    const fs::path dir = testOutputDir("panel_scroll");
+    const PanelRun zoomed =
+        runScripted("01_lighting", {"-", "500 300 0 3", "500 300 0"}, dir, "zoomed");
+    ASSERT_EQ(zoomed.run.exitCode, 0) << zoomed.run.err;
+    std::printf("after the scroll: %s\n", zoomed.command.c_str());
+    const std::optional<std::string> fov = valueIn(zoomed.command, "--fov");
+    ASSERT_TRUE(fov) << zoomed.command;
+    EXPECT_EQ(*fov, "42") << "45 degrees, 3 steps of 1 degree narrower";
+    expectFrameIsTheCommands(zoomed, dir);
+}
+
 // The mouse over the panel is the panel's: the same drag outside it turns the camera.
 TEST(Panel, TheMouseOverThePanelLeavesTheCameraAlone) {
     const fs::path dir = testOutputDir("panel_camera");
