@@ -64,6 +64,7 @@ std::string currentText(const FlagSpec& spec, const std::map<std::string, std::s
 struct Panel::State {
     std::vector<FlagSpec> flags;
     std::function<void(const std::string&)> copy;
+    std::string copied;  // the last command line copied: said beside the button while it shows
     ImGuiContext* context = nullptr;
     std::ostringstream layout;
     bool wantsMouse = false;
@@ -301,8 +302,16 @@ std::vector<std::string> Panel::layoutFrame(const PanelInput& input, glm::ivec2 
     ImGui::PushTextWrapPos(kPanelWidth - kMargin);
     ImGui::TextUnformatted(status.commandLine.c_str());
     ImGui::PopTextWrapPos();
-    if (ImGui::Button("copy")) state_->copy(status.commandLine);
+    if (ImGui::Button("copy")) {
+        state_->copy(status.commandLine);
+        state_->copied = status.commandLine;
+    }
     state_->noteItem("copy");
+    if (state_->copied == status.commandLine) {
+        ImGui::SameLine();
+        ImGui::TextUnformatted("copied to the clipboard");
+        state_->noteItem("copied");
+    }
     ImGui::PopItemWidth();
     ImGui::End();
     return changed;

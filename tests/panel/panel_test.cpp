@@ -233,6 +233,27 @@ TEST(Panel, ACheckboxSwitchesTheFlag) {
     expectFrameIsTheCommands(changed, dir);
 }
 
+// The copy button says that it copied, beside it, for as long as the command line is the copied
+// one; a change of view takes the note away.
+TEST(Panel, CopySaysItCopied) {
+    const fs::path dir = testOutputDir("panel_copy");
+    const auto controls = layoutOf("01_lighting", dir);
+    ASSERT_TRUE(controls.count("copy")) << "no copy button";
+    EXPECT_FALSE(controls.count("copied"));
+    const std::string copy = controls.at("copy").at(0.5);
+    const PanelRun copied =
+        runScripted("01_lighting", {"-", hover(copy), click(copy), hover(copy)}, dir, "copied");
+    EXPECT_TRUE(copied.controls.count("copied")) << copied.run.out;
+    EXPECT_NE(copied.run.out.find("01_lighting: copied: " + copied.command), std::string::npos)
+        << copied.run.out;
+    ASSERT_TRUE(controls.count("--lights -"));
+    const std::string minus = controls.at("--lights -").at(0.5);
+    const PanelRun changed = runScripted(
+        "01_lighting", {"-", hover(copy), click(copy), hover(minus), click(minus), hover(minus)},
+        dir, "changed");
+    EXPECT_FALSE(changed.controls.count("copied")) << changed.command;
+}
+
 // A scroll zooms the fly camera (its field of view), and the command line says so: the frame after
 // the scroll is what that command draws (--fov), not the unzoomed picture.
 TEST(Panel, AScrolledFieldOfViewIsOnTheCommandLine) {
