@@ -363,6 +363,51 @@ TEST(SceneGraph, MirroredNodeMatchesBakedMirror) {
                      render07(dir, flat, eye, size), kPairGate, 0.2);
 }
 
+// 07's normal view reads the normal map: a square facing the eye whose normal map holds one
+// tangent-space normal, (0.6, 0, 0.8) as texels (204, 128, 230), shows that normal turned by the
+// square's frame (tangent +X, normal +Z) at every pixel, 0.5 + 0.5 N, as the shader decodes the
+// texel (2 t - 1, normalised). A view that ignored the map would show (0, 0, 1).
+TEST(SceneGraph, NormalViewReadsTheNormalMap) {
+    const fs::path dir = testOutputDir("scene_graph_normal_view");
+    const std::array<std::uint8_t, 3> texel = {204, 128, 230};
+    Image tilted{4, 4, 3, {}};
+    for (int i = 0; i < 16; ++i)
+        tilted.pixels.insert(tilted.pixels.end(), texel.begin(), texel.end());
+    writePng(dir / "tilted.png", tilted);
+    const fs::path model =
+        writeTextFile(dir, "tilted.gltf",
+                      R"({"asset":{"version":"2.0"},
+"images":[{"uri":"tilted.png"}],"textures":[{"source":0}],
+"materials":[{"normalTexture":{"index":0}}],
+"meshes":[{"primitives":[)" +
+                          meshPrimitiveJson(0, 0) + R"(]}],
+)" + meshBuffersJson({rectangle(0.8f, 0.8f)}) +
+                          R"("nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})");
+    const SampleRender render = renderSample("07_gltf_metallic_roughness", dir / "normal.png",
+                                             {"--model", model.string(), "--msaa", "0", "--size",
+                                              "64x64", "--camera", "0,0,2.5", "--view", "normal"});
+    ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+    const Image image = readImage(render.image, 3);
+    glm::dvec3 n(0.0);
+    for (int c = 0; c < 3; ++c) n[c] = 2.0 * texel[size_t(c)] / 255.0 - 1.0;
+    n = glm::normalize(n);  // tangent (1, 0, 0), bitangent (0, +-1, 0), normal (0, 0, 1)
+    int compared = 0, worst = 0;
+    for (int y = 20; y < 44; ++y) {
+        for (int x = 20; x < 44; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                // the bitangent's sign does not matter: the texel's y is 0.004
+                const double expected = 255.0 * (0.5 + 0.5 * n[c]);
+                const int got = image.pixels[(size_t(y) * 64 + size_t(x)) * 3 + size_t(c)];
+                worst = std::max(worst, int(std::lround(std::abs(got - expected))));
+            }
+            ++compared;
+        }
+    }
+    std::printf("--view normal on the tilted square: %d pixels, worst channel difference %d/255\n",
+                compared, worst);
+    EXPECT_LE(worst, 2);
+}
+
 // ---- (d) a double-sided back face ----
 
 // A normal-mapped double-sided square seen from behind, against a single-sided square facing the
