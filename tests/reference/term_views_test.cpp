@@ -72,10 +72,10 @@ glm::dvec3 gridView(const std::string& view, const cpu::SurfacePoint& s, const g
     if (view == "irradiance") return compress(reads.irradiance);
     if (view == "prefiltered") return compress(reads.prefiltered);
     if (view == "lut") return {reads.lut, 0.0};
-    cpu::SplitSumAmbient ambient = cpu::splitSumAmbient(
-        std::max(glm::dot(N, V), 0.0f), s.albedo, s.metallic, s.roughness,
-        glm::vec3(reads.irradiance), glm::vec3(reads.prefiltered), glm::vec2(reads.lut),
-        lighting.exactSplitSum);
+    cpu::SplitSumAmbient ambient =
+        cpu::splitSumAmbient(std::max(glm::dot(N, V), 0.0f), s.albedo, s.metallic, s.roughness,
+                             glm::vec3(reads.irradiance), glm::vec3(reads.prefiltered),
+                             glm::vec2(reads.lut), lighting.exactSplitSum);
     if (lighting.ibl == GridLighting::Ibl::Irradiance) ambient.specular = glm::vec3(0.0f);
     const float shown = lighting.iblOn ? s.ao : 0.0f;
     const glm::dvec3 diffuse(ambient.diffuse * shown), specular(ambient.specular * shown);
@@ -96,9 +96,8 @@ std::optional<cpu::SurfacePoint> constantMaterial(const Hit& hit, int row, int c
 // Renders `views` of a grid sample (640 x 360, no MSAA; `args` added) and compares each with
 // gridView on the spheres, where NdotV >= 0.5.
 void compareViews(const std::string& sample, const std::vector<std::string>& views,
-                  const std::vector<std::string>& args, const GridLighting& lighting,
-                  double gridZ, const fs::path& dir,
-                  const SurfaceAt& surfaceAt = constantMaterial) {
+                  const std::vector<std::string>& args, const GridLighting& lighting, double gridZ,
+                  const fs::path& dir, const SurfaceAt& surfaceAt = constantMaterial) {
     LinearSkyReads skyReads;
     const GridFrame frame{.width = 640, .height = 360, .gridZ = gridZ};
     for (const std::string& view : views) {
@@ -126,7 +125,7 @@ void compareViews(const std::string& sample, const std::vector<std::string>& vie
 }
 
 const std::vector<std::string> kInputAndDirectViews = {
-    "albedo", "normal", "metallic", "roughness", "ao", "f0", "d",
+    "albedo", "normal", "metallic", "roughness", "ao",    "f0",    "d",
     "g",      "f",      "specular", "diffuse",   "ndotl", "direct"};
 
 TEST(Reference, Lighting01TermViewsMatchTheCpu) {
@@ -177,12 +176,67 @@ TEST(Reference, SplitSum05TermViewsMatchTheCpu) {
 
     compareViews("05_ibl_specular", {"ambient-diffuse", "ambient-specular", "final"},
                  {"--hdr", hdr, "--split-sum", "exact"},
-                 {.ibl = GridLighting::Ibl::SplitSum, .exactSplitSum = true}, -2.0,
-                 dir / "exact");
+                 {.ibl = GridLighting::Ibl::SplitSum, .exactSplitSum = true}, -2.0, dir / "exact");
     compareViews("05_ibl_specular", {"final"}, {"--hdr", hdr, "--lights", "0"},
                  {.lights = {}, .ibl = GridLighting::Ibl::SplitSum}, -2.0, dir / "no_lights");
     compareViews("05_ibl_specular", {"final", "ambient"}, {"--hdr", hdr, "--no-ibl"},
                  {.ibl = GridLighting::Ibl::SplitSum, .iblOn = false}, -2.0, dir / "no_ibl");
+}
+
+// 05 --textured: the irradiance view is the irradiance at the shading normal, the normal map's
+// (the view reads the irradiance map, not the prefiltered one). The normals come from the same
+// run's normal view (0.5 + 0.5 N, 8 bits: at most 0.4 % off), the irradiance from the linear
+// sky's closed form; compared on the five spheres away from their rims. (Planted, an irradiance
+// view reading the prefiltered map passed every test.)
+TEST(Reference, SplitSum05TexturedIrradianceViewIsAtTheMappedNormal) {
+    const fs::path dir = testOutputDir("reference_05_textured_irradiance");
+    const std::string hdr = writeLinearSky(dir).string();
+    const LinearSkyReads skyReads;
+    const int width = 320, height = 180;
+    std::map<std::string, Image> views;
+    for (const std::string view : {"normal", "irradiance"}) {
+        const SampleRender render = renderSample(
+            "05_ibl_specular", dir / (view + ".png"),
+            {"--textured", "--hdr", hdr, "--msaa", "0", "--size", "320x180", "--view", view});
+        ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
+        views[view] = readImage(render.image, 3);
+    }
+    // the row of five at z = -2, 2.5 apart, seen from (0, 0, 8) down -Z through 45 degrees
+    const glm::dvec3 eye(0.0, 0.0, 8.0);
+    const double tanHalf = std::tan(std::numbers::pi / 8.0);
+    int compared = 0, worst = 0;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const glm::dvec3 d = glm::normalize(
+                glm::dvec3((2.0 * (x + 0.5) / width - 1.0) * tanHalf * width / height,
+                           (1.0 - 2.0 * (y + 0.5) / height) * tanHalf, -1.0));
+            bool onSphere = false;
+            for (int col = 0; col < 5 && !onSphere; ++col) {
+                const glm::dvec3 centre((col - 2) * 2.5, 0.0, -2.0), oc = eye - centre;
+                const double b = glm::dot(oc, d), disc = b * b - (glm::dot(oc, oc) - 1.0);
+                if (disc <= 0.0) continue;
+                const glm::dvec3 n = glm::normalize(eye + (-b - std::sqrt(disc)) * d - centre);
+                onSphere = glm::dot(n, -d) >= 0.5;  // away from the rim
+            }
+            if (!onSphere) continue;
+            const size_t at = (size_t(y) * width + size_t(x)) * 3;
+            glm::dvec3 n;
+            for (int c = 0; c < 3; ++c)
+                n[c] = 2.0 * views["normal"].pixels[at + size_t(c)] / 255.0 - 1.0;
+            const glm::dvec3 irradiance = skyReads.at(glm::normalize(n), -d, 0.5f, true).irradiance;
+            for (int c = 0; c < 3; ++c) {
+                const double expected = 255.0 * irradiance[c] / (1.0 + irradiance[c]);
+                worst = std::max(
+                    worst, int(std::lround(
+                               std::abs(views["irradiance"].pixels[at + size_t(c)] - expected))));
+            }
+            ++compared;
+        }
+    }
+    std::printf("05 --textured --view irradiance: %d pixels, worst channel difference %d/255\n",
+                compared, worst);
+    EXPECT_GT(compared, 3000);
+    EXPECT_LE(worst, 3);
 }
 
 }  // namespace
