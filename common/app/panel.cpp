@@ -76,7 +76,9 @@ struct Panel::State {
         note(id, at, ImVec2(at.x + width, at.y + ImGui::GetFrameHeight()));
     }
     // The item just laid out.
-    void noteItem(const std::string& id) { note(id, ImGui::GetItemRectMin(), ImGui::GetItemRectMax()); }
+    void noteItem(const std::string& id) {
+        note(id, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+    }
     void note(const std::string& id, ImVec2 min, ImVec2 max) {
         layout << id << ' ' << int(std::lround(min.x)) << ' ' << int(std::lround(min.y)) << ' '
                << int(std::lround(max.x - min.x)) << ' ' << int(std::lround(max.y - min.y)) << '\n';
@@ -143,9 +145,11 @@ bool Panel::State::control(const FlagSpec& spec, std::map<std::string, std::stri
             float value = float(std::strtod(text.c_str(), nullptr));
             ImGuiSliderFlags flags = ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp;
             // A range over many decades (an exposure) slides by its logarithm.
-            if (spec.min > 0.0 && spec.max / spec.min > 1000.0) flags |= ImGuiSliderFlags_Logarithmic;
+            if (spec.min > 0.0 && spec.max / spec.min > 1000.0)
+                flags |= ImGuiSliderFlags_Logarithmic;
             noteFrame(spec.name, width);
-            if (ImGui::SliderFloat(label, &value, float(spec.min), float(spec.max), "%.3g", flags)) {
+            if (ImGui::SliderFloat(label, &value, float(spec.min), float(spec.max), "%.3g",
+                                   flags)) {
                 const std::string next = sliderText(value);
                 if (next != text) {
                     values[spec.name] = next;
@@ -243,8 +247,9 @@ void Panel::label(glm::vec2 pixel, const std::string& text) {
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     const ImVec2 at(std::round(pixel.x - 0.5f * size.x), std::round(pixel.y - 0.5f * size.y));
     // light text on a dark box, readable over any picture
-    list->AddRectFilled(ImVec2(at.x - 3.0f, at.y - 1.0f), ImVec2(at.x + size.x + 3.0f, at.y + size.y + 1.0f),
-                        IM_COL32(0, 0, 0, 150), 3.0f);
+    list->AddRectFilled(ImVec2(at.x - 3.0f, at.y - 1.0f),
+                        ImVec2(at.x + size.x + 3.0f, at.y + size.y + 1.0f), IM_COL32(0, 0, 0, 150),
+                        3.0f);
     list->AddText(at, IM_COL32(235, 235, 235, 255), text.c_str());
 }
 
@@ -275,9 +280,22 @@ std::vector<std::string> Panel::layoutFrame(const PanelInput& input, glm::ivec2 
     state_->wantsMouse = showPanel && io.WantCaptureMouse;
     if (!showPanel) return changed;
 
-    ImGui::SetNextWindowPos(ImVec2(kMargin, kMargin), ImGuiCond_FirstUseEver);
+    // At the top right: the texts' subjects start at the left (01's and 05's smooth metals, 07's
+    // leaf). Its title bar moves it (drag) and folds it (the arrow, or a double click).
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kMargin, kMargin), ImGuiCond_FirstUseEver,
+                            ImVec2(1.0f, 0.0f));
     ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.0f), ImGuiCond_FirstUseEver);
-    ImGui::Begin(status.title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    const bool open =
+        ImGui::Begin(status.title.c_str(), nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    {
+        const ImVec2 at = ImGui::GetWindowPos();
+        state_->note("title", at,
+                     ImVec2(at.x + ImGui::GetWindowWidth(), at.y + ImGui::GetFrameHeight()));
+    }
+    if (!open) {  // folded: the title bar alone
+        ImGui::End();
+        return changed;
+    }
     ImGui::PushItemWidth(kPanelWidth * 0.55f);
     if (status.frameMilliseconds >= 0.0) {
         ImGui::Text("%.1f ms a frame   (Tab hides this panel)", status.frameMilliseconds);

@@ -74,7 +74,8 @@ public:
     // Where the last update put each control, a line each: "<id> x y w h" in framebuffer pixels
     // from the top-left. Ids: "--flag" (a slider's or a combo box's frame, a checkbox), "--flag -"
     // and "--flag +" (a stepper's buttons), "--flag=word" (an open combo box's item), "pause",
-    // "step", "copy". The tests aim their clicks with it.
+    // "step", "copy", "copied" (its note), "title" (the title bar). The tests aim their clicks
+    // with it.
     std::string layout() const;
 
 private:

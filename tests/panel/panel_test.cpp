@@ -233,6 +233,34 @@ TEST(Panel, ACheckboxSwitchesTheFlag) {
     expectFrameIsTheCommands(changed, dir);
 }
 
+// The panel need not hide the subject: it starts at the top right, its title bar drags it
+// elsewhere, and the arrow on the title bar folds it to that bar.
+TEST(Panel, ThePanelMovesAndFolds) {
+    const fs::path dir = testOutputDir("panel_move_fold");
+    const auto controls = layoutOf("01_lighting", dir);
+    ASSERT_TRUE(controls.count("title") && controls.count("--lights -")) << "no title bar";
+    const Rect title = controls.at("title");
+    EXPECT_EQ(title.x + title.w, 640 - 10) << "not at the top right";
+    const Rect lights = controls.at("--lights -");
+    // drag the title bar 300 pixels left and 40 down
+    const std::string grab = title.at(0.5);
+    const std::string dropped = std::to_string(title.x + title.w / 2 - 300) + " " +
+                                std::to_string(title.y + title.h / 2 + 40);
+    const PanelRun moved = runScripted(
+        "01_lighting", {"-", hover(grab), hold(grab), hold(dropped), hover(dropped)}, dir, "moved");
+    ASSERT_TRUE(moved.controls.count("--lights -")) << moved.run.out;
+    EXPECT_EQ(moved.controls.at("--lights -").x, lights.x - 300);
+    EXPECT_EQ(moved.controls.at("--lights -").y, lights.y + 40);
+    EXPECT_EQ(valueIn(moved.command, "--camera"), "0,0,23,-90,0") << "the drag turned the camera";
+    // the fold arrow sits at the title bar's left end
+    const std::string arrow =
+        std::to_string(title.x + title.h / 2) + " " + std::to_string(title.y + title.h / 2);
+    const PanelRun folded =
+        runScripted("01_lighting", {"-", hover(arrow), click(arrow), hover(arrow)}, dir, "folded");
+    EXPECT_TRUE(folded.controls.count("title")) << folded.run.out;
+    EXPECT_FALSE(folded.controls.count("--lights -")) << "the panel did not fold";
+}
+
 // The copy button says that it copied, beside it, for as long as the command line is the copied
 // one; a change of view takes the note away.
 TEST(Panel, CopySaysItCopied) {
