@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -230,6 +231,26 @@ TEST(Panel, ACheckboxSwitchesTheFlag) {
     std::printf("after the click: %s\n", changed.command.c_str());
     EXPECT_EQ(valueIn(changed.command, "--no-punctual"), "") << changed.command;
     EXPECT_FALSE(valueIn(changed.command, "--no-ibl")) << changed.command;
+    expectFrameIsTheCommands(changed, dir);
+}
+
+// 07's exposure, a factor from 0.001 to 10000, slides in stops (-8 to +8, a tenth at a time):
+// from the middle (1, 0 stops) to three quarters of the way is +4 stops, a factor of 16.
+TEST(Panel, ExposureSlidesInStops) {
+    const fs::path dir = testOutputDir("panel_exposure");
+    const auto controls = layoutOf("07_gltf_metallic_roughness", dir);
+    ASSERT_TRUE(controls.count("--exposure")) << "no slider for --exposure";
+    const Rect slider = controls.at("--exposure");
+    const PanelRun changed = runScripted(
+        "07_gltf_metallic_roughness",
+        {"-", hover(slider.at(0.5)), hold(slider.at(0.5)), hold(slider.at(0.62)),
+         hold(slider.at(0.75)), hover(slider.at(0.75))},
+        dir, "dragged");
+    std::printf("after the drag: %s\n", changed.command.c_str());
+    const auto value = valueIn(changed.command, "--exposure");
+    ASSERT_TRUE(value) << changed.command;
+    // a quarter of the travel is 4 stops (the grab's width takes a few pixels off)
+    EXPECT_NEAR(std::log2(std::strtod(value->c_str(), nullptr)), 4.0, 0.35) << *value;
     expectFrameIsTheCommands(changed, dir);
 }
 
