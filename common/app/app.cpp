@@ -438,6 +438,9 @@ bool App::nextFrame() {
         setLiveFlag(change.name,
                     change.present ? std::optional<std::string>(change.value) : std::nullopt);
     }
+    // and its pause and step buttons, as the panel's
+    const web::ClockPresses presses = web::takeClockPresses();
+    pauseOrStep(presses.pause, presses.step);
 #endif
     if (input.togglePanel && panel_) {
         panelShown_ = !panelShown_;
@@ -547,6 +550,12 @@ bool App::setLiveFlag(const std::string& name, const std::optional<std::string>&
 }
 
 void App::updatePanel(const InputFrame& input) {
+    if (deltaTime_ > 0.0f) {
+        // What the panel (and a page) says a frame takes: smoothed, so that it can be read.
+        const double ms = double(deltaTime_) * 1000.0;
+        shownFrameMilliseconds_ =
+            shownFrameMilliseconds_ <= 0.0 ? ms : 0.9 * shownFrameMilliseconds_ + 0.1 * ms;
+    }
     panelHasMouse_ = false;
     if (!panel_) return;
     PanelStatus status{.title = config_.title,
@@ -569,7 +578,11 @@ void App::updatePanel(const InputFrame& input) {
                                                   : std::optional<std::string>(value->second));
     }
     panelHasMouse_ = panel_->wantsMouse();
-    if (status.pauseClicked) {
+    pauseOrStep(status.pauseClicked, status.stepClicked);
+}
+
+void App::pauseOrStep(bool pause, bool step) {
+    if (pause) {
         if (paused_) {
             // Time runs on from where it stood.
             startSeconds_ = context_->seconds() - double(pausedTime_);
@@ -578,13 +591,7 @@ void App::updatePanel(const InputFrame& input) {
         }
         paused_ = !paused_;
     }
-    if (status.stepClicked && paused_) pausedTime_ += 1.0f / 60.0f;
-    if (deltaTime_ > 0.0f) {
-        // What the panel says a frame takes: smoothed, so that it can be read.
-        const double ms = double(deltaTime_) * 1000.0;
-        shownFrameMilliseconds_ =
-            shownFrameMilliseconds_ <= 0.0 ? ms : 0.9 * shownFrameMilliseconds_ + 0.1 * ms;
-    }
+    if (step && paused_) pausedTime_ += 1.0f / 60.0f;
 }
 
 void App::endFrame() {
@@ -611,6 +618,8 @@ void App::endFrame() {
         target_->blitToDefault(size.x, size.y);
 #ifdef PBR_WEBGL
         web::showLabels(width(), height());
+        // the page's bar under the picture: what the panel says natively
+        web::showFrame(shownFrameMilliseconds_, commandLine(), paused_);
 #endif
         if (panel_ && !panelInPicture) {
             glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -151,6 +151,8 @@ private:
     void installDebugOutput();
     void checkGlErrors(const char* where);
     void writeScreenshot(const std::string& path);
+    // The panel's (or a page's) pause and step buttons: time stops, runs on, or steps 1/60 s.
+    void pauseOrStep(bool pause, bool step);
     void updatePanel(const InputFrame& input);
     // A live flag's new value from the panel or the page (nullopt: a switch turned off), taken
     // through the command line's checks; a refused one is one line, and the flag keeps its

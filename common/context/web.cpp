@@ -53,6 +53,17 @@ EM_JS(void, pbr_mouse_hint, (const char* text), {
     if (hint) hint.textContent = UTF8ToString(text);
 });
 
+// The bar under the picture (Module.pbrShowFrame), and its buttons' presses (Module.pbrClock:
+// 1 pause or run, 2 step).
+EM_JS(void, pbr_show_frame, (double milliseconds, const char* command, int paused), {
+    if (Module["pbrShowFrame"]) Module["pbrShowFrame"](milliseconds, UTF8ToString(command), paused);
+});
+EM_JS(int, pbr_take_clock_presses, (), {
+    var pressed = Module["pbrClock"] || 0;
+    Module["pbrClock"] = 0;
+    return pressed;
+});
+
 // The controls: Module.pbrDeclareFlags builds them; their changes queue up in the page as
 // lines "name<TAB>1<TAB>value" (1: given, 0: a switch turned off), fetched once a frame.
 EM_JS(void, pbr_declare_flags, (const char* json), {
@@ -92,6 +103,15 @@ void declareFlags(const std::string& json) {
 
 void mouseHint(const std::string& text) {
     pbr_mouse_hint(text.c_str());
+}
+
+void showFrame(double milliseconds, const std::string& commandLine, bool paused) {
+    pbr_show_frame(milliseconds, commandLine.c_str(), paused ? 1 : 0);
+}
+
+ClockPresses takeClockPresses() {
+    const int pressed = pbr_take_clock_presses();
+    return {.pause = (pressed & 1) != 0, .step = (pressed & 2) != 0};
 }
 
 std::vector<FlagChange> takeFlagChanges() {

@@ -45,6 +45,14 @@ std::vector<FlagChange> takeFlagChanges();
 // The header's line on how the picture takes the mouse and keys (the fly camera's, or the orbit
 // camera's).
 void mouseHint(const std::string& text);
+// The bar under a shown picture, as the window's panel has it: the frame time (negative: none
+// yet), the command line of the view, and whether time stands (pause or run).
+void showFrame(double milliseconds, const std::string& commandLine, bool paused);
+// The bar's pause and step buttons pressed since the last frame.
+struct ClockPresses {
+    bool pause = false, step = false;
+};
+ClockPresses takeClockPresses();
 // Labels over the picture, as the window's panel layer draws them (App::label): those of the
 // frame being drawn, at pixels of the picture from its top-left; shown when the frame is.
 void label(float x, float y, const std::string& text);

@@ -95,6 +95,10 @@ PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
             for (std::string line; std::getline(lines, line);) page.said.push_back(line);
         } else if (name == "hint.txt") {
             page.hint = readBytes(entry.path());
+        } else if (name == "command.txt") {
+            page.command = readBytes(entry.path());
+        } else if (name == "frame.txt") {
+            page.frame = readBytes(entry.path());
         } else if (name == "exit.txt") {
             page.exitCode = std::atoi(readBytes(entry.path()).c_str());
         } else if (entry.is_regular_file() && name.front() != '.') {

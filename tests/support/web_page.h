@@ -21,6 +21,8 @@ struct PageRun {
     std::string address;  // the page's query string at the end (its controls keep it current)
     std::vector<std::string> said;  // every text the page's header showed, in order
     std::string hint;               // the header's line on the mouse and keys
+    std::string command;            // the bar's command line under a shown picture
+    std::string frame;              // the bar's frame time ("143 ms a frame")
 };
 
 // Why the web tests cannot run on this machine (no browser, no web build), or nullopt.

@@ -207,6 +207,26 @@ INSTANTIATE_TEST_SUITE_P(Pages, WebTermView,
 // A page draws the same bytes every time, the IBL maps it computes included: 06 given the
 // environment (--hdr) computes its cube, mip chain, irradiance and prefiltered maps in the page
 // (none of them baked there), and writes them, with its picture, as files.
+// A shown page carries what the window's panel does, in a bar under the picture: the frame time,
+// pause (or run) and step, and the command line of the view. 03 spins its objects with time:
+// pause pressed after the first frame stops it, and the command line says at what time.
+TEST(Web, ThePageCarriesTheFrameTimePauseAndCommandLine) {
+    const std::string sample = "03_gltf_unlit";
+    PBR_NEED_WEB(sample);
+    const fs::path dir = testOutputDir("web_bar");
+    const PageRun page =
+        runPage(sample, {"--frames", "4", "--output", "bar.png"}, dir / "paused", "press=pause");
+    ASSERT_EQ(page.exitCode, std::optional<int>(0)) << page.log << page.browser.err;
+    std::printf("the bar: '%s', '%s'\n", page.frame.c_str(), page.command.c_str());
+    EXPECT_TRUE(std::regex_match(page.frame, std::regex("[0-9]+ ms a frame"))) << page.frame;
+    EXPECT_EQ(page.command.rfind("03_gltf_unlit --size ", 0), 0u) << page.command;
+    EXPECT_TRUE(std::regex_search(page.command, std::regex(" --time [0-9.e-]+"))) << page.command;
+    const PageRun running =
+        runPage(sample, {"--frames", "2", "--output", "bar.png"}, dir / "running");
+    ASSERT_EQ(running.exitCode, std::optional<int>(0)) << running.log;
+    EXPECT_EQ(running.command.find("--time"), std::string::npos) << running.command;
+}
+
 TEST(Web, TwoRunsGiveTheSameBytes) {
     const std::string sample = "06_brdf_lut";
     PBR_NEED_WEB(sample);
