@@ -59,11 +59,12 @@ inline constexpr View kGltfViews[] = {
     View::Diffuse,     View::NdotL,       View::Direct,         View::Irradiance,
     View::Prefiltered, View::Lut,         View::AmbientDiffuse, View::AmbientSpecular,
     View::Ambient};
-// Every view the direct-light samples have, in the order --help lists them.
+// Every view the direct-light samples have (01, 02), in the order --help lists them: the text's
+// constant ambient term among them.
 inline constexpr View kDirectLightViews[] = {
     View::Final, View::Albedo, View::Normal,   View::Metallic, View::Roughness,
     View::Ao,    View::F0,     View::D,        View::G,        View::F,
-    View::Specular, View::Diffuse, View::NdotL, View::Direct};
+    View::Specular, View::Diffuse, View::NdotL, View::Direct, View::Ambient};
 // 09's: those, and its ambient volumes' light alone (--only picks the light types).
 inline constexpr View kLightTypeViews[] = {
     View::Final, View::Albedo,   View::Normal,  View::Metallic, View::Roughness,

@@ -52,6 +52,7 @@ void main()
                        roughness);
     color = directView(termView, albedo, N, metallic, roughness, ao, sums,
                        gammaCorrect(reinhard(Lo)));
+    if (termView == VIEW_AMBIENT) color = gammaCorrect(reinhard(ambient));  // the term alone
 #endif
     FragColor = vec4(color, 1.0);
 }

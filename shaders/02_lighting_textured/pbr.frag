@@ -43,6 +43,7 @@ void main()
                        m.roughness);
     color = directView(termView, m.albedo, N, m.metallic, m.roughness, m.ao, sums,
                        gammaCorrect(reinhard(Lo)));
+    if (termView == VIEW_AMBIENT) color = gammaCorrect(reinhard(ambient));  // the term alone
 #endif
     FragColor = vec4(color, 1.0);
 }

@@ -65,7 +65,11 @@ glm::dvec3 gridView(const std::string& view, const cpu::SurfacePoint& s, const g
         addTermView(view, t, s.albedo, sum);
     }
     if (view == "direct") return glm::dvec3(cpu::reinhardGamma(glm::vec3(direct)));
-    if (lighting.ibl == GridLighting::Ibl::None) return compress(sum);
+    if (lighting.ibl == GridLighting::Ibl::None) {
+        // LearnOpenGL's stand-in for the environment: 0.03 x albedo x ao, alone
+        if (view == "ambient") return glm::dvec3(cpu::reinhardGamma(0.03f * s.albedo * s.ao));
+        return compress(sum);
+    }
 
     const SkyReads reads = skyReads.at(glm::dvec3(N), glm::dvec3(V), s.roughness,
                                        lighting.ibl == GridLighting::Ibl::SplitSum);
@@ -129,8 +133,9 @@ const std::vector<std::string> kInputAndDirectViews = {
     "g",      "f",      "specular", "diffuse",   "ndotl", "direct"};
 
 TEST(Reference, Lighting01TermViewsMatchTheCpu) {
-    compareViews("01_lighting", kInputAndDirectViews, {}, {}, 0.0,
-                 testOutputDir("reference_01_views"));
+    std::vector<std::string> views = kInputAndDirectViews;
+    views.push_back("ambient");
+    compareViews("01_lighting", views, {}, {}, 0.0, testOutputDir("reference_01_views"));
 }
 
 // 02 in a material of random texels, drawn with nearest filtering so that the CPU reads the
@@ -140,7 +145,9 @@ TEST(Reference, Textured02TermViewsMatchTheCpu) {
     const fs::path dir = testOutputDir("reference_02_views");
     const TexelMaterial material = randomTexels();
     const fs::path set = writeTexelMaterial(material, dir / "random_texels");
-    compareViews("02_lighting_textured", kInputAndDirectViews,
+    std::vector<std::string> views = kInputAndDirectViews;
+    views.push_back("ambient");  // with the maps' ao
+    compareViews("02_lighting_textured", views,
                  {"--filter", "nearest", "--material-dir", set.string(), "--camera",
                   "0,0,23"},  // the whole grid (02 starts closer)
                  {.lights = std::span(&kTexturedGridLight, 1)}, 0.0, dir,
