@@ -349,6 +349,22 @@ void labelSphereGrid(App& app, const SphereGrid& grid, float roughnessOffset,
     }
 }
 
+std::vector<FlagSpec> gridLightFlags() {
+    return {FlagSpec::integer("--lights", "N", "use the first N of the 4 point lights", 0, 4, 4)
+                .asLive(),
+            FlagSpec::integer("--light", "K",
+                              "light K (1-4) alone, its terms alone in a view (0: as --lights "
+                              "says)",
+                              0, 4, 0)
+                .asLive()};
+}
+
+std::span<const glm::vec3> gridLights(const App& app) {
+    const std::span<const glm::vec3> all(kGridLightPositions);
+    if (const int alone = app.flagInt("--light"); alone > 0) return all.subspan(size_t(alone - 1), 1);
+    return all.first(size_t(app.flagInt("--lights")));
+}
+
 std::string App::commandLine() const {
     // A value with characters a shell would take apart is quoted.
     auto quoted = [](const std::string& text) {

@@ -220,4 +220,10 @@ private:
 void labelSphereGrid(App& app, const SphereGrid& grid, float roughnessOffset = 0.0f,
                      float metallicOffset = 0.0f);
 
+// The grid samples' four point lights (01, 04, 05): --lights N, the first N of them, and
+// --light K, light K alone (1-4; 0, the default: as --lights says), both read every frame; and
+// the lights those flags leave, in kGridLightPositions' order.
+std::vector<FlagSpec> gridLightFlags();
+std::span<const glm::vec3> gridLights(const App& app);
+
 }  // namespace pbr

@@ -14,39 +14,37 @@
 
 int main(int argc, char** argv) try {
     // The lesson's knobs, each a flag and, in a window, a control of the live panel: the sample
-    // reads them every frame (asLive), so a change shows in the next frame.
-    pbr::App app(
-        argc, argv,
-        {.name = "01_lighting",
-         .title = "01 lighting: Cook-Torrance, 4 point lights",
-         .cameraPosition = {0.0f, 0.0f, 23.0f},  // the whole grid; the text starts at (0,0,3)
-         .flags = {pbr::FlagSpec::integer("--lights", "N", "use the first N of the 4 point lights",
-                                          0, 4, 4)
-                       .asLive(),
-                   pbr::FlagSpec::numbers("--light-color", "R,G,B",
-                                          "the point lights' radiance, as the text's", 3,
-                                          0.0, 1000.0, {300.0, 300.0, 300.0})
-                       .asLive(),
-                   pbr::FlagSpec::numbers("--albedo", "R,G,B",
-                                          "every sphere's albedo, linear (the text's dark red)", 3,
-                                          0.0, 1.0, {0.5, 0.0, 0.0})
-                       .asLive(),
-                   pbr::FlagSpec::number("--roughness-offset", "D",
-                                         "add D (-1 to 1) to every sphere's roughness", -1.0, 1.0,
-                                         0.0)
-                       .asLive(),
-                   pbr::FlagSpec::number("--metallic-offset", "D",
-                                         "add D (-1 to 1) to every sphere's metallic", -1.0, 1.0,
-                                         0.0)
-                       .asLive(),
-                   pbr::viewFlag(pbr::kDirectLightViews).asLive()}});
+    // reads them every frame (asLive), so a change shows in the next frame. The first two pick
+    // the lights (--lights N, --light K: pbr::gridLightFlags).
+    std::vector<pbr::FlagSpec> flags = pbr::gridLightFlags();
+    flags.insert(
+        flags.end(),
+        {pbr::FlagSpec::numbers("--light-color", "R,G,B",
+                                "the point lights' radiance, as the text's", 3, 0.0, 1000.0,
+                                {300.0, 300.0, 300.0})
+             .asLive(),
+         pbr::FlagSpec::numbers("--albedo", "R,G,B",
+                                "every sphere's albedo, linear (the text's dark red)", 3, 0.0, 1.0,
+                                {0.5, 0.0, 0.0})
+             .asLive(),
+         pbr::FlagSpec::number("--roughness-offset", "D",
+                               "add D (-1 to 1) to every sphere's roughness", -1.0, 1.0, 0.0)
+             .asLive(),
+         pbr::FlagSpec::number("--metallic-offset", "D",
+                               "add D (-1 to 1) to every sphere's metallic", -1.0, 1.0, 0.0)
+             .asLive(),
+         pbr::viewFlag(pbr::kDirectLightViews).asLive()});
+    pbr::App app(argc, argv,
+                 {.name = "01_lighting",
+                  .title = "01 lighting: Cook-Torrance, 4 point lights",
+                  .cameraPosition = {0.0f, 0.0f, 23.0f},  // the whole grid; the text: (0,0,3)
+                  .flags = flags});
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
     const pbr::SphereGrid grid{.nrRows = 7, .nrColumns = 7, .spacing = 2.5f};
 
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // closed meshes, counter-clockwise outside: their backs never show
     while (app.nextFrame()) {
-        const int lightCount = app.flagInt("--lights");
         const float roughnessOffset = app.flagNumber("--roughness-offset");
         const float metallicOffset = app.flagNumber("--metallic-offset");
         const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
@@ -64,8 +62,8 @@ int main(int argc, char** argv) try {
         shader.set("albedo", app.flagVec3("--albedo"));
         shader.set("ao", 1.0f);
         pbr::selectView(shader, view);
-        const auto lightPositions = std::span(pbr::kGridLightPositions).first(size_t(lightCount));
-        pbr::setPointLights(shader, lightPositions, app.flagVec3("--light-color"));
+        const std::span<const glm::vec3> lights = pbr::gridLights(app);
+        pbr::setPointLights(shader, lights, app.flagVec3("--light-color"));
 
         // Metallic rises with the row (bottom row 0), roughness with the column; roughness is
         // kept at 0.05 or above, since a perfectly smooth sphere's point-light highlight vanishes.
@@ -84,9 +82,8 @@ int main(int argc, char** argv) try {
         }
 
         // The lights themselves, as small spheres in the same shader, so their places show.
-        for (int i = 0; i < lightCount; ++i) {
-            shader.setModel(glm::scale(glm::translate(glm::mat4(1.0f), lightPositions[size_t(i)]),
-                                       glm::vec3(0.5f)));
+        for (const glm::vec3& light : lights) {
+            shader.setModel(glm::scale(glm::translate(glm::mat4(1.0f), light), glm::vec3(0.5f)));
             sphere.draw();
         }
         // The axes, in a window (and with --panel).

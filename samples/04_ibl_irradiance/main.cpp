@@ -16,8 +16,7 @@
 int main(int argc, char** argv) try {
     std::vector<pbr::FlagSpec> flags = pbr::iblFlags();
     // The parts of the light, and what is seen: read every frame (live in the window's panel).
-    flags.push_back(pbr::FlagSpec::integer(
-        "--lights", "N", "use the first N of the 4 point lights", 0, 4, 4).asLive());
+    for (const pbr::FlagSpec& flag : pbr::gridLightFlags()) flags.push_back(flag);
     flags.push_back(
         pbr::FlagSpec::toggle("--no-ibl", "leave out the image-based light").asLive());
     flags.push_back(pbr::FlagSpec::choice(
@@ -54,7 +53,6 @@ int main(int argc, char** argv) try {
     while (app.nextFrame()) {
         if (app.shadersReloaded()) precompute();  // (the passes give back the frame's target)
         const pbr::TextureCube& environmentMap = environment->environmentMap();
-        const int lightCount = app.flagInt("--lights");
         const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
         pbr::Shader& shader =
             app.shader("common/pbr.vert", "04_ibl_irradiance/pbr.frag", pbr::viewDefines(view));
@@ -71,7 +69,7 @@ int main(int argc, char** argv) try {
         shader.set("irradianceMap", 0);
         shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
         pbr::selectView(shader, view);
-        pbr::setPointLights(shader, std::span(pbr::kGridLightPositions).first(size_t(lightCount)),
+        pbr::setPointLights(shader, pbr::gridLights(app),
                             glm::vec3(300.0f));
         irradianceMap->bind(0);
         const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing

@@ -32,8 +32,7 @@ int main(int argc, char** argv) try {
         "--split-sum", {"text", "exact"},
         "the ambient term: the text's (F times the LUT's scale; default) or the split sum as its "
         "derivation has it (F0 times the scale, diffuse weighted by what the lobe leaves)").asLive());
-    flags.push_back(pbr::FlagSpec::integer(
-        "--lights", "N", "use the first N of the 4 point lights", 0, 4, 4).asLive());
+    for (const pbr::FlagSpec& flag : pbr::gridLightFlags()) flags.push_back(flag);
     flags.push_back(
         pbr::FlagSpec::toggle("--no-ibl", "leave out the image-based light").asLive());
     flags.push_back(pbr::FlagSpec::choice(
@@ -88,7 +87,6 @@ int main(int argc, char** argv) try {
     while (app.nextFrame()) {
         if (app.shadersReloaded()) precompute();  // (the passes give back the frame's target)
         const pbr::TextureCube& environmentMap = environment->environmentMap();
-        const int lightCount = app.flagInt("--lights");
         const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
         pbr::Shader& shader = textured ? app.shader("common/pbr_tangent.vert",
                                                     "05_ibl_specular/pbr_textured.frag",
@@ -118,7 +116,7 @@ int main(int argc, char** argv) try {
         shader.set("exactSplitSum", app.flagChoice("--split-sum") == "exact" ? 1 : 0);
         shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
         pbr::selectView(shader, view);
-        pbr::setPointLights(shader, std::span(pbr::kGridLightPositions).first(size_t(lightCount)),
+        pbr::setPointLights(shader, pbr::gridLights(app),
                             glm::vec3(300.0f));
         const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing
         if (textured) {

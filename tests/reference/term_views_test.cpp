@@ -136,6 +136,10 @@ TEST(Reference, Lighting01TermViewsMatchTheCpu) {
     std::vector<std::string> views = kInputAndDirectViews;
     views.push_back("ambient");
     compareViews("01_lighting", views, {}, {}, 0.0, testOutputDir("reference_01_views"));
+    // one light alone (--light K): the third, up and to the left of the grid's right half
+    compareViews("01_lighting", {"d", "f", "specular", "ndotl", "direct"}, {"--light", "3"},
+                 {.lights = std::span(kGridLights).subspan(2, 1)}, 0.0,
+                 testOutputDir("reference_01_views_light_3"));
 }
 
 // 02 in a material of random texels, drawn with nearest filtering so that the CPU reads the
@@ -168,6 +172,9 @@ TEST(Reference, Irradiance04TermViewsMatchTheCpu) {
 
     compareViews("04_ibl_irradiance", {"final"}, {"--hdr", hdr, "--lights", "0"},
                  {.lights = {}, .ibl = GridLighting::Ibl::Irradiance}, -2.0, dir / "no_lights");
+    compareViews("04_ibl_irradiance", {"d", "direct"}, {"--hdr", hdr, "--light", "1"},
+                 {.lights = std::span(kGridLights).first(1), .ibl = GridLighting::Ibl::Irradiance},
+                 -2.0, dir / "light_1");
     compareViews("04_ibl_irradiance", {"final", "ambient"}, {"--hdr", hdr, "--no-ibl"},
                  {.ibl = GridLighting::Ibl::Irradiance, .iblOn = false}, -2.0, dir / "no_ibl");
 }
