@@ -40,8 +40,7 @@ Image widenForSrgb(const Image& image) {
 #ifdef PBR_WEBGL
 // WebGL 2 has no glGetTexImage: the level is attached to a framebuffer of its own and read back
 // as RGBA floats (float colour buffers are readable with EXT_color_buffer_float).
-std::vector<float> readLevelRgba(GLenum target, GLuint texture, int level, int width,
-                                 int height) {
+std::vector<float> readLevelRgba(GLenum target, GLuint texture, int level, int width, int height) {
     const SavedGlState saved;
     const GlFramebuffer framebuffer;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
@@ -135,8 +134,7 @@ Texture2D::Texture2D(int width, int height, GLenum internalFormat)
 
 std::vector<float> Texture2D::readFloats(int channels) const {
 #ifdef PBR_WEBGL
-    return firstChannels(readLevelRgba(GL_TEXTURE_2D, texture_.id(), 0, width_, height_),
-                         channels);
+    return firstChannels(readLevelRgba(GL_TEXTURE_2D, texture_.id(), 0, width_, height_), channels);
 #else
     static constexpr GLenum kFormats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
     std::vector<float> texels(size_t(width_) * size_t(height_) * size_t(channels));
@@ -314,6 +312,14 @@ void PbrTextures::bind() const {
     metallic.bind(2);
     roughness.bind(3);
     ao.bind(4);
+}
+
+void PbrTextures::setSamplers(Shader& shader) {
+    shader.set("albedoMap", 0);
+    shader.set("normalMap", 1);
+    shader.set("metallicMap", 2);
+    shader.set("roughnessMap", 3);
+    shader.set("aoMap", 4);
 }
 
 void Texture2D::bind(int unit) const {

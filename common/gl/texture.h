@@ -7,6 +7,7 @@
 #include "files/image.h"
 #include "files/ktx.h"
 #include "gl/gl.h"
+#include "gl/shader.h"
 
 namespace pbr {
 
@@ -89,6 +90,9 @@ struct PbrTextures {
 
     // Binds albedo, normal, metallic, roughness, ao to texture units 0-4.
     void bind() const;
+    // Points the samplers albedoMap, normalMap, metallicMap, roughnessMap and aoMap at those
+    // units (02 writes the five lines out, as the text does).
+    static void setSamplers(Shader& shader);
 };
 PbrTextures loadPbrTextures(const std::filesystem::path& dir,
                             TextureFilter filter = TextureFilter::Trilinear);

@@ -104,9 +104,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     // light, that is before the first frame unless --no-ibl; the environment keeps a reference
     // to the cache, so both live as long.
     std::optional<IblCache> cache;
-    std::optional<IblEnvironment> environment;
-    std::optional<TextureCube> irradianceMap, prefilterMap;
-    std::optional<Texture2D> brdfLUT;
+    std::optional<SplitSumMaps> maps;
     Skybox skybox;
     // A renderer for each program a view needs (it sets the program's texture units).
     std::map<const Shader*, std::unique_ptr<GltfRenderer>> renderers;
@@ -126,11 +124,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         // is computed anew.
         if (ibl && (!cache || app.shadersReloaded())) {
             if (!cache) cache.emplace(cacheDir(app.options()));
-            environment.emplace(*cache, environmentFile(app.options()));
-            environment->environmentMap();  // for the sky
-            irradianceMap.emplace(environment->irradianceMap(32));
-            prefilterMap.emplace(environment->prefilteredMap(128, 5, kPrefilterSamples));
-            brdfLUT.emplace(brdfLut(*cache, 512, 1024, BrdfLutChannels::ScaleBias));
+            maps.emplace(*cache, environmentFile(app.options()));
             app.addPrecomputeSeconds(cache->computeSeconds());
             app.bindRenderTarget();  // the frame's, after the precomputation's own
         }
@@ -149,11 +143,10 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         shader.set("exposure", exposure);
         selectView(shader, view);
         if (ibl) {
-            useIblMaps(shader, environment->environmentMap(), *irradianceMap, *prefilterMap,
-                       *brdfLUT, GltfRenderer::kFirstIblUnit);
+            maps->use(shader, GltfRenderer::kFirstIblUnit);
             // the sky first here: blended primitives must be drawn over it
             skybox.setToneMapping(toneMapper, exposure);
-            skybox.draw(environment->environmentMap(), app.view(), app.projection());
+            skybox.draw(maps->environment.environmentMap(), app.view(), app.projection());
         }
         renderer->draw(gpuModel, glm::mat4(1.0f), app.view());
         if (!app.flag("--model")) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "app/app.h"
 #include "base/error.h"
 #include "base/paths.h"
 #include "context/web.h"
@@ -51,8 +52,8 @@ HdrImage readEnvironment(const fs::path& path) {
     HdrImage image = readHdr(path);
     int clamped = 0;  // texels
     for (int y = 0; y < image.height; ++y) {
-        clamped += clampRadiance(&image.pixels[size_t(y) * size_t(image.width) * 3],
-                                 size_t(image.width));
+        clamped +=
+            clampRadiance(&image.pixels[size_t(y) * size_t(image.width) * 3], size_t(image.width));
     }
     if (clamped > 0) {
         std::fprintf(stderr,
@@ -83,8 +84,7 @@ std::string renderer() {
 
 // A cube map's file: its key is the baked key with the renderer that computes it.
 MapFile cubeMapFile(std::string name, std::string bakedKey, std::string contents) {
-    return {std::move(name), bakedKey + "; renderer " + renderer(), std::move(contents),
-            bakedKey};
+    return {std::move(name), bakedKey + "; renderer " + renderer(), std::move(contents), bakedKey};
 }
 
 }  // namespace
@@ -95,6 +95,34 @@ std::vector<FlagSpec> iblFlags() {
             FlagSpec::toggle("--no-cache",
                              "compute the IBL maps even when the cache holds them, and leave the "
                              "cache alone")};
+}
+
+std::vector<FlagSpec> iblGridFlags(bool splitSum) {
+    std::vector<FlagSpec> flags = gridLightFlags();
+    flags.push_back(FlagSpec::toggle("--no-ibl", "leave out the image-based light").asLive());
+    if (!splitSum) {
+        flags.push_back(FlagSpec::choice("--background", {"environment", "irradiance"},
+                                         "what the sky shows: the environment (default) or its "
+                                         "irradiance, the light the spheres' diffuse term reads")
+                            .asLive());
+        return flags;
+    }
+    flags.insert(flags.begin(),
+                 FlagSpec::choice("--split-sum", {"text", "exact"},
+                                  "the ambient term: the text's (F times the LUT's scale; default) "
+                                  "or the split sum as its derivation has it (F0 times the scale, "
+                                  "diffuse weighted by what the lobe leaves)")
+                     .asLive());
+    flags.push_back(FlagSpec::choice("--background", {"environment", "irradiance", "prefiltered"},
+                                     "what the sky shows: the environment (default), its "
+                                     "irradiance, or the prefiltered map at --background-lod")
+                        .asLive());
+    flags.push_back(FlagSpec::number("--background-lod", "L",
+                                     "the sky's mip level: of the prefiltered map, roughness L / "
+                                     "4; of the environment, its box-filtered mips",
+                                     0.0, 4.0, 0.0)
+                        .asLive());
+    return flags;
 }
 
 fs::path environmentFile(const Options& options) {
@@ -236,20 +264,20 @@ MapFile IblEnvironment::environmentFile() const {
 }
 
 MapFile IblEnvironment::irradianceFile(int size, float sampleDelta) const {
-    return cubeMapFile(
-        hdr_.stem().string() + ".irradiance.ktx",
-        "irradiance " + std::to_string(size) + " delta " + std::to_string(sampleDelta) +
-            "; shaders " + shaderCodeHash("ibl/cubemap.vert", "ibl/irradiance.frag") + "; from " +
-            environmentKey_,
-        "diffuse irradiance / pi, " + std::to_string(size) + "^2 cube map");
+    return cubeMapFile(hdr_.stem().string() + ".irradiance.ktx",
+                       "irradiance " + std::to_string(size) + " delta " +
+                           std::to_string(sampleDelta) + "; shaders " +
+                           shaderCodeHash("ibl/cubemap.vert", "ibl/irradiance.frag") + "; from " +
+                           environmentKey_,
+                       "diffuse irradiance / pi, " + std::to_string(size) + "^2 cube map");
 }
 
 MapFile IblEnvironment::prefilteredFile(int size, int levels, int samples) const {
     return cubeMapFile(hdr_.stem().string() + ".prefiltered.ktx",
-                       "prefiltered " + std::to_string(size) + " levels " +
-                           std::to_string(levels) + " samples " + std::to_string(samples) +
-                           "; shaders " + shaderCodeHash("ibl/cubemap.vert", "ibl/prefilter.frag") +
-                           "; from " + environmentKey_,
+                       "prefiltered " + std::to_string(size) + " levels " + std::to_string(levels) +
+                           " samples " + std::to_string(samples) + "; shaders " +
+                           shaderCodeHash("ibl/cubemap.vert", "ibl/prefilter.frag") + "; from " +
+                           environmentKey_,
                        "GGX-prefiltered specular cube map, " + std::to_string(size) +
                            "^2, mip m for roughness m / " + std::to_string(levels - 1) + ", " +
                            std::to_string(samples) + " samples");
@@ -279,8 +307,8 @@ LutTexel lutTexel(const KtxImage& lut, float u, float v) {
     const int x = std::clamp(int(u * float(lut.width)), 0, lut.width - 1);
     const int y = std::clamp(int(v * float(lut.height)), 0, lut.height - 1);  // row 0: v = 0
     const int channels = lut.channels(), bytes = lut.bytesPerChannel();
-    const std::uint8_t* texel =
-        lut.images[0].data() + (size_t(y) * size_t(lut.width) + size_t(x)) * size_t(channels * bytes);
+    const std::uint8_t* texel = lut.images[0].data() + (size_t(y) * size_t(lut.width) + size_t(x)) *
+                                                           size_t(channels * bytes);
     auto channel = [&](int c) {
         if (c >= channels) return 0.0f;
         if (bytes == 2) {
@@ -317,6 +345,17 @@ MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels) {
 Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channels) {
     return cache.texture(brdfLutFile(size, samples, channels), brdfLutFormat(channels),
                          [&] { return computeBrdfLut(size, samples, channels); });
+}
+
+SplitSumMaps::SplitSumMaps(IblCache& cache, const fs::path& hdr)
+    : environment(cache, hdr),
+      // the environment first (the sky draws it, and a frame should not make it)
+      irradiance((environment.environmentMap(), environment.irradianceMap(32))),
+      prefiltered(environment.prefilteredMap(128, 5, kPrefilterSamples)),
+      brdfLut(pbr::brdfLut(cache, 512, 1024, BrdfLutChannels::ScaleBias)) {}
+
+void SplitSumMaps::use(Shader& shader, int firstUnit) {
+    useIblMaps(shader, environment.environmentMap(), irradiance, prefiltered, brdfLut, firstUnit);
 }
 
 }  // namespace pbr

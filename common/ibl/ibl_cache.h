@@ -19,6 +19,11 @@ namespace pbr {
 
 // The flags every IBL sample takes: --hdr FILE and --no-cache.
 std::vector<FlagSpec> iblFlags();
+// The grid IBL samples' flags (04; 05 with `splitSum`), read every frame: the point lights
+// (gridLightFlags), --no-ibl, and what the sky shows (--background: the environment or its
+// irradiance); with `splitSum`, the ambient term's form first (--split-sum) and the sky's
+// prefiltered map too, at --background-lod.
+std::vector<FlagSpec> iblGridFlags(bool splitSum);
 // The environment --hdr names, else the project's (sunny_courtyard.hdr).
 std::filesystem::path environmentFile(const Options& options);
 // The cache folder to use: none with --no-cache, else defaultCacheDir() (paths.h).
@@ -94,6 +99,19 @@ private:
     // what the environment cube is made from (the renderer left out); every map's source
     std::string environmentKey_;
     std::optional<TextureCube> environment_;
+};
+
+// The split sum's maps as 05, 07 and 08 use them (LearnOpenGL's sizes), through the cache: the
+// environment cube, its irradiance (32^2), the prefiltered map (128^2, 5 levels, roughness
+// level / 4, kPrefilterSamples a texel) and the BRDF LUT (512^2 from 1024 samples, scale and
+// bias). Made again (emplace) after a shader reload: the cache's keys hold the shaders' code.
+struct SplitSumMaps {  // irradiance 32, prefiltered 128 x 5 levels, LUT 512 from 1024 samples
+    SplitSumMaps(IblCache& cache, const std::filesystem::path& hdr);
+    IblEnvironment environment;
+    TextureCube irradiance, prefiltered;
+    Texture2D brdfLut;
+    // useIblMaps with these maps, from unit `firstUnit`.
+    void use(Shader& shader, int firstUnit);
 };
 
 // The BRDF LUT (see computeBrdfLut) through the cache, and what it is as a file: RG16F for

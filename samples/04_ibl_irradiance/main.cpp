@@ -16,13 +16,7 @@
 int main(int argc, char** argv) try {
     std::vector<pbr::FlagSpec> flags = pbr::iblFlags();
     // The parts of the light, and what is seen: read every frame (live in the window's panel).
-    for (const pbr::FlagSpec& flag : pbr::gridLightFlags()) flags.push_back(flag);
-    flags.push_back(
-        pbr::FlagSpec::toggle("--no-ibl", "leave out the image-based light").asLive());
-    flags.push_back(pbr::FlagSpec::choice(
-        "--background", {"environment", "irradiance"},
-        "what the sky shows: the environment (default) or its irradiance, the light the "
-        "spheres' diffuse term reads").asLive());
+    for (const pbr::FlagSpec& flag : pbr::iblGridFlags(false)) flags.push_back(flag);
     flags.push_back(pbr::viewFlag(pbr::kIrradianceViews).asLive());
     pbr::App app(argc, argv,
                  {.name = "04_ibl_irradiance",
@@ -69,8 +63,7 @@ int main(int argc, char** argv) try {
         shader.set("irradianceMap", 0);
         shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
         pbr::selectView(shader, view);
-        pbr::setPointLights(shader, pbr::gridLights(app),
-                            glm::vec3(300.0f));
+        pbr::setPointLights(shader, pbr::gridLights(app), glm::vec3(300.0f));
         irradianceMap->bind(0);
         const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing
         for (int row = 0; row < grid.nrRows; ++row) {

@@ -4,8 +4,6 @@
 // over (shaders/include/light_types.glsl). A floor and a row of spheres in the project's material
 // sets (scene.h), with the engine's material inputs (texture tiling and offset, an albedo tint).
 // See README.md beside this file.
-#include <cstdlib>
-#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
@@ -20,47 +18,12 @@
 #include "scene.h"
 
 int main(int argc, char** argv) try {
-    std::vector<std::string> onlyChoices = {"all"};
-    onlyChoices.insert(onlyChoices.end(), std::begin(pbr::kLightTypeNames),
-                       std::end(pbr::kLightTypeNames));
-    pbr::App app(
-        argc, argv,
-        {.name = "09_light_types",
-         .title = "09 light types: point, directional, spot, ambient box, ambient sphere",
-         .cameraPosition = {0.0f, 5.5f, 12.0f},
-         .cameraPitch = -22.0f,
-         .flags = {
-             // --only, --point-lights and --view are read every frame (live in the panel)
-             pbr::FlagSpec::choice("--only", onlyChoices,
-                                   "draw with one kind of light (default all)")
-                 .asLive(),
-             pbr::FlagSpec::integer("--point-lights", "N",
-                                    "add N moving point lights (their places depend only on "
-                                    "--time), for the cost of many lights",
-                                    0, pbr::LightBlock::kMaxLights - 5, 0)
-                 .asLive(),
-             pbr::FlagSpec::numbers("--attenuation", "C,L,Q",
-                                    "the point light's constant, linear and quadratic terms, "
-                                    "each >= 0, not all 0",
-                                    // light_types::kPointAttenuation, which the reference
-                                    // tests light the scene with
-                                    3, 0.0, 1e6, {1.0, 0.7, 1.8})
-                 .refusing([](const std::string& value) {
-                     // (three numbers >= 0 by now: the kind's own check comes first)
-                     double sum = 0.0;
-                     for (size_t at = 0; at != std::string::npos;) {
-                         sum += std::strtod(value.c_str() + at, nullptr);
-                         at = value.find(',', at);
-                         if (at != std::string::npos) ++at;
-                     }
-                     return sum > 0.0 ? std::string() : std::string("all three terms are 0");
-                 })
-                 .asLive(),
-             pbr::FlagSpec::toggle("--untextured",
-                                   "a plain material instead of the maps: the tint as albedo, "
-                                   "a rough dielectric floor, spheres of roughness 0.4 and "
-                                   "metallic 0 to 1 from left to right (the tests' surface)"),
-             pbr::viewFlag(pbr::kLightTypeViews).asLive()}});
+    pbr::App app(argc, argv,
+                 {.name = "09_light_types",
+                  .title = "09 light types: point, directional, spot, ambient box, ambient sphere",
+                  .cameraPosition = {0.0f, 5.5f, 12.0f},
+                  .cameraPitch = -22.0f,
+                  .flags = light_types::flags()});
     const bool untextured = app.options().has("--untextured");
 
     const std::vector<light_types::Object> objects = light_types::objects();
@@ -93,7 +56,8 @@ int main(int argc, char** argv) try {
         }
         const auto moving = light_types::movingLights(app.flagInt("--point-lights"), app.time());
         lights.insert(lights.end(), moving.begin(), moving.end());
-        if (lights != uploaded || app.frameIndex() == 0) {  // a change in the panel, or a moving light
+        if (lights != uploaded ||
+            app.frameIndex() == 0) {  // a change in the panel, or a moving light
             lightBuffer.upload(lights);
             uploaded = lights;
         }
@@ -102,11 +66,7 @@ int main(int argc, char** argv) try {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         shader.use();
         pbr::LightBuffer::attach(shader.id());
-        shader.set("albedoMap", 0);
-        shader.set("normalMap", 1);
-        shader.set("metallicMap", 2);
-        shader.set("roughnessMap", 3);
-        shader.set("aoMap", 4);
+        pbr::PbrTextures::setSamplers(shader);
         shader.set("useDerivativeTangents", 0);
         shader.set("untextured", untextured ? 1 : 0);
         pbr::selectView(shader, view);

@@ -4,12 +4,17 @@
 // data, no GL: shared by the sample and its reference test (tests/reference/light_types_test.cpp),
 // which shades the same scene on the CPU.
 #include <cmath>
+#include <cstdlib>
+#include <iterator>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/options.h"
+#include "app/views.h"
 #include "math/light_block.h"
 
 namespace light_types {
@@ -99,6 +104,44 @@ inline std::vector<pbr::PackedLight> movingLights(int count, float time) {
         lights.push_back(pbr::pointLight(position, hue, 3.0f, {1.0f, 0.7f, 1.8f}));
     }
     return lights;
+}
+
+// The sample's own flags: --only, --point-lights, --attenuation and --view are read every frame
+// (live in the panel).
+inline std::vector<pbr::FlagSpec> flags() {
+    std::vector<std::string> onlyChoices = {"all"};
+    onlyChoices.insert(onlyChoices.end(), std::begin(pbr::kLightTypeNames),
+                       std::end(pbr::kLightTypeNames));
+    return {
+        pbr::FlagSpec::choice("--only", onlyChoices, "draw with one kind of light (default all)")
+            .asLive(),
+        pbr::FlagSpec::integer("--point-lights", "N",
+                               "add N moving point lights (their places depend only on "
+                               "--time), for the cost of many lights",
+                               0, pbr::LightBlock::kMaxLights - 5, 0)
+            .asLive(),
+        pbr::FlagSpec::numbers("--attenuation", "C,L,Q",
+                               "the point light's constant, linear and quadratic terms, "
+                               "each >= 0, not all 0",
+                               // light_types::kPointAttenuation, which the reference
+                               // tests light the scene with
+                               3, 0.0, 1e6, {1.0, 0.7, 1.8})
+            .refusing([](const std::string& value) {
+                // (three numbers >= 0 by now: the kind's own check comes first)
+                double sum = 0.0;
+                for (size_t at = 0; at != std::string::npos;) {
+                    sum += std::strtod(value.c_str() + at, nullptr);
+                    at = value.find(',', at);
+                    if (at != std::string::npos) ++at;
+                }
+                return sum > 0.0 ? std::string() : std::string("all three terms are 0");
+            })
+            .asLive(),
+        pbr::FlagSpec::toggle("--untextured",
+                              "a plain material instead of the maps: the tint as albedo, "
+                              "a rough dielectric floor, spheres of roughness 0.4 and "
+                              "metallic 0 to 1 from left to right (the tests' surface)"),
+        pbr::viewFlag(pbr::kLightTypeViews).asLive()};
 }
 
 }  // namespace light_types

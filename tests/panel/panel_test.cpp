@@ -241,11 +241,11 @@ TEST(Panel, ExposureSlidesInStops) {
     const auto controls = layoutOf("07_gltf_metallic_roughness", dir);
     ASSERT_TRUE(controls.count("--exposure")) << "no slider for --exposure";
     const Rect slider = controls.at("--exposure");
-    const PanelRun changed = runScripted(
-        "07_gltf_metallic_roughness",
-        {"-", hover(slider.at(0.5)), hold(slider.at(0.5)), hold(slider.at(0.62)),
-         hold(slider.at(0.75)), hover(slider.at(0.75))},
-        dir, "dragged");
+    const PanelRun changed =
+        runScripted("07_gltf_metallic_roughness",
+                    {"-", hover(slider.at(0.5)), hold(slider.at(0.5)), hold(slider.at(0.62)),
+                     hold(slider.at(0.75)), hover(slider.at(0.75))},
+                    dir, "dragged");
     std::printf("after the drag: %s\n", changed.command.c_str());
     const auto value = valueIn(changed.command, "--exposure");
     ASSERT_TRUE(value) << changed.command;
@@ -308,7 +308,7 @@ TEST(Panel, CopySaysItCopied) {
 TEST(Panel, AScrolledFieldOfViewIsOnTheCommandLine) {
     const fs::path dir = testOutputDir("panel_scroll");
     const PanelRun zoomed =
-        runScripted("01_lighting", {"-", "500 300 0 3", "500 300 0"}, dir, "zoomed");
+        runScripted("01_lighting", {"-", "60 300 0 3", "60 300 0"}, dir, "zoomed");
     ASSERT_EQ(zoomed.run.exitCode, 0) << zoomed.run.err;
     std::printf("after the scroll: %s\n", zoomed.command.c_str());
     const std::optional<std::string> fov = valueIn(zoomed.command, "--fov");
@@ -328,7 +328,8 @@ TEST(Panel, TheMouseOverThePanelLeavesTheCameraAlone) {
         dir, "on_panel");
     EXPECT_EQ(valueIn(onPanel.command, "--camera"), "0,0,23,-90,0") << onPanel.command;
     const PanelRun outside =
-        runScripted("01_lighting", {"-", "500 300 0", "500 300 1", "540 300 1"}, dir, "outside");
+        // (at the left: the panel sits at the top right)
+        runScripted("01_lighting", {"-", "60 300 0", "60 300 1", "100 300 1"}, dir, "outside");
     EXPECT_NE(valueIn(outside.command, "--camera"), "0,0,23,-90,0")
         << "a drag over the picture should turn the camera: " << outside.command;
 }
@@ -340,7 +341,7 @@ TEST(Panel, AMovedCamerasCommandDrawsTheSamePicture) {
     const fs::path dir = testOutputDir("panel_camera_replay");
     for (const std::string sample : {"01_lighting", "07_gltf_metallic_roughness"}) {
         const PanelRun moved = runScripted(
-            sample, {"-", "500 300 0", "500 300 1", "537 289 1", "561 262 1"}, dir, sample);
+            sample, {"-", "60 300 0", "60 300 1", "97 289 1", "121 262 1"}, dir, sample);
         ASSERT_EQ(moved.run.exitCode, 0) << moved.run.err;
         const std::optional<std::string> camera = valueIn(moved.command, "--camera");
         ASSERT_TRUE(camera) << "the drag did not move the camera: " << moved.command;
