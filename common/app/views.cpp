@@ -37,6 +37,8 @@ constexpr Named kNames[] = {
     {View::BaseColor, "base-color"},
     {View::Occlusion, "occlusion"},
     {View::Emissive, "emissive"},
+    {View::Attenuation, "attenuation"},
+    {View::Cone, "cone"},
 };
 }  // namespace
 

@@ -49,40 +49,73 @@ enum class View {
     BaseColor = 20,
     Occlusion = 21,
     Emissive = 22,
+    // 09's lesson: the point and spot lights' distance attenuation, and the spot's cone
+    Attenuation = 23,
+    Cone = 24,
 };
 
 // 07's and 08's: the glTF material's inputs, the punctual lights' terms, the split sum's.
-inline constexpr View kGltfViews[] = {
-    View::Final,       View::BaseColor,   View::Normal,         View::Metallic,
-    View::Roughness,   View::Occlusion,   View::Emissive,       View::F0,
-    View::D,           View::G,           View::F,              View::Specular,
-    View::Diffuse,     View::NdotL,       View::Direct,         View::Irradiance,
-    View::Prefiltered, View::Lut,         View::AmbientDiffuse, View::AmbientSpecular,
-    View::Ambient};
+inline constexpr View kGltfViews[] = {View::Final,
+                                      View::BaseColor,
+                                      View::Normal,
+                                      View::Metallic,
+                                      View::Roughness,
+                                      View::Occlusion,
+                                      View::Emissive,
+                                      View::F0,
+                                      View::D,
+                                      View::G,
+                                      View::F,
+                                      View::Specular,
+                                      View::Diffuse,
+                                      View::NdotL,
+                                      View::Direct,
+                                      View::Irradiance,
+                                      View::Prefiltered,
+                                      View::Lut,
+                                      View::AmbientDiffuse,
+                                      View::AmbientSpecular,
+                                      View::Ambient};
 // Every view the direct-light samples have (01, 02), in the order --help lists them: the text's
 // constant ambient term among them.
 inline constexpr View kDirectLightViews[] = {
-    View::Final, View::Albedo, View::Normal,   View::Metallic, View::Roughness,
-    View::Ao,    View::F0,     View::D,        View::G,        View::F,
-    View::Specular, View::Diffuse, View::NdotL, View::Direct, View::Ambient};
-// 09's: those, and its ambient volumes' light alone (--only picks the light types).
+    View::Final,    View::Albedo,  View::Normal, View::Metallic, View::Roughness,
+    View::Ao,       View::F0,      View::D,      View::G,        View::F,
+    View::Specular, View::Diffuse, View::NdotL,  View::Direct,   View::Ambient};
+// 09's: those, its ambient volumes' light alone, and its lesson's two factors (--only picks the
+// light types).
 inline constexpr View kLightTypeViews[] = {
-    View::Final, View::Albedo,   View::Normal,  View::Metallic, View::Roughness,
-    View::Ao,    View::F0,       View::D,       View::G,        View::F,
-    View::Specular, View::Diffuse, View::NdotL, View::Direct,   View::Ambient};
+    View::Final, View::Albedo, View::Normal,  View::Metallic,    View::Roughness, View::Ao,
+    View::F0,    View::D,      View::G,       View::F,           View::Specular,  View::Diffuse,
+    View::NdotL, View::Direct, View::Ambient, View::Attenuation, View::Cone};
 // 04's: the direct-light views and its image-based light, the irradiance alone.
 inline constexpr View kIrradianceViews[] = {
-    View::Final,      View::Albedo,  View::Normal,     View::Metallic,       View::Roughness,
-    View::Ao,         View::F0,      View::D,          View::G,              View::F,
-    View::Specular,   View::Diffuse, View::NdotL,      View::Direct,         View::Irradiance,
-    View::AmbientDiffuse, View::Ambient};
+    View::Final,     View::Albedo, View::Normal,     View::Metallic,
+    View::Roughness, View::Ao,     View::F0,         View::D,
+    View::G,         View::F,      View::Specular,   View::Diffuse,
+    View::NdotL,     View::Direct, View::Irradiance, View::AmbientDiffuse,
+    View::Ambient};
 // 05's: the direct-light views and every read and term of the split sum.
-inline constexpr View kSplitSumViews[] = {
-    View::Final,      View::Albedo,      View::Normal,         View::Metallic,
-    View::Roughness,  View::Ao,          View::F0,             View::D,
-    View::G,          View::F,           View::Specular,       View::Diffuse,
-    View::NdotL,      View::Direct,      View::Irradiance,     View::Prefiltered,
-    View::Lut,        View::AmbientDiffuse, View::AmbientSpecular, View::Ambient};
+inline constexpr View kSplitSumViews[] = {View::Final,
+                                          View::Albedo,
+                                          View::Normal,
+                                          View::Metallic,
+                                          View::Roughness,
+                                          View::Ao,
+                                          View::F0,
+                                          View::D,
+                                          View::G,
+                                          View::F,
+                                          View::Specular,
+                                          View::Diffuse,
+                                          View::NdotL,
+                                          View::Direct,
+                                          View::Irradiance,
+                                          View::Prefiltered,
+                                          View::Lut,
+                                          View::AmbientDiffuse,
+                                          View::AmbientSpecular,
+                                          View::Ambient};
 
 // "final", "albedo", "normal", ..., "d", "g", "f", "specular", "diffuse", "ndotl", "direct",
 // "irradiance", "prefiltered", "lut", "ambient-diffuse", "ambient-specular", "ambient",

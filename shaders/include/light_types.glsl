@@ -94,6 +94,8 @@ bool isAmbientVolume(Light light)
 DirectSums viewSums;
 vec3 viewDirect;
 vec3 viewAmbient;
+float viewAttenuation;  // summed over the point and spot lights, at any side of the horizon
+float viewCone;         // summed over the spot lights
 #endif
 
 // Outgoing radiance at `position`: the direct lights through directLight (brdf.glsl) plus the
@@ -105,6 +107,8 @@ vec3 shadeLights(vec3 position, vec3 N, vec3 V, vec3 albedo, float metallic, flo
     vec3 ambient = vec3(0.0);
 #ifdef TERM_VIEWS
     viewSums = noDirectSums();
+    viewAttenuation = 0.0;
+    viewCone = 0.0;
 #endif
     for (int i = 0; i < lightCount; ++i)
     {
@@ -119,6 +123,11 @@ vec3 shadeLights(vec3 position, vec3 N, vec3 V, vec3 albedo, float metallic, flo
 #ifdef TERM_VIEWS
         if (radiance != vec3(0.0))
             addDirectTerms(viewSums, N, V, L, albedo, metallic, roughness);
+        int type = int(lights[i].typeCutoffOuterIntensity.x);
+        if (type == LIGHT_POINT || type == LIGHT_SPOT)
+            viewAttenuation += lightAttenuation(lights[i], distance(lights[i].positionConstant.xyz, position));
+        if (type == LIGHT_SPOT)
+            viewCone += spotCone(lights[i], L);
 #endif
     }
 #ifdef TERM_VIEWS
@@ -131,11 +140,16 @@ vec3 shadeLights(vec3 position, vec3 N, vec3 V, vec3 albedo, float metallic, flo
 #ifdef TERM_VIEWS
 // 09's term views (views.glsl), after shadeLights has run at this point: the inputs; the direct
 // lights' terms; the direct light alone and the ambient volumes' light alone (x albedo x ao),
-// each through the picture's Reinhard and gamma.
+// each through the picture's Reinhard and gamma; the attenuation as x / (1 + x) and the spot's
+// cone as it is.
 vec3 lightTypesView(int which, vec3 N, vec3 albedo, float metallic, float roughness, float ao)
 {
     if (which == VIEW_AMBIENT)
         return gammaCorrect(reinhard(viewAmbient * albedo * ao));
+    if (which == VIEW_ATTENUATION)
+        return viewCompress(vec3(viewAttenuation));
+    if (which == VIEW_CONE)
+        return vec3(viewCone);
     return directView(which, albedo, N, metallic, roughness, ao, viewSums,
                       gammaCorrect(reinhard(viewDirect)));
 }

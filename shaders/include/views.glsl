@@ -38,6 +38,8 @@ const int VIEW_AMBIENT = 19;
 const int VIEW_BASE_COLOR = 20;  // the glTF samples' names for their inputs (gltf_views.glsl)
 const int VIEW_OCCLUSION = 21;
 const int VIEW_EMISSIVE = 22;
+const int VIEW_ATTENUATION = 23;
+const int VIEW_CONE = 24;
 
 // The light-dependent terms, summed over the lights (see addDirectTerms).
 struct DirectSums

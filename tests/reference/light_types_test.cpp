@@ -268,9 +268,26 @@ glm::dvec3 lightTypesView(const std::string& view, const cpu::SurfacePoint& s,
         return glm::dvec3(cpu::reinhardGamma(cpu::shadeLightTypes(s, kEye, lights)));
     glm::dvec3 sum(0.0);
     glm::vec3 direct(0.0f), ambient(0.0f);
+    double attenuation = 0.0, cone = 0.0;
     for (const PackedLight& light : lights) {
         glm::vec3 L;
         const glm::vec3 radiance = cpu::lightTypeRadiance(light, s.position, L);
+        const glm::dvec3 toLight = glm::dvec3(light.position()) - glm::dvec3(s.position);
+        const double d = glm::length(toLight);
+        if (light.type() == LightType::Point || light.type() == LightType::Spot) {
+            // the text's 1 / (constant + linear d + quadratic d^2), in double here
+            attenuation +=
+                1.0 / (light.constant() + light.linear() * d + light.quadratic() * d * d);
+        }
+        if (light.type() == LightType::Spot) {
+            // 1 inside the cut-off, 0 beyond cut-off + outer, linear in the cosine between
+            const double inner = std::cos(glm::radians(double(light.cutoff())));
+            const double outer =
+                std::cos(glm::radians(double(light.outerCutoff())));  // cut-off + outer
+            const double theta =
+                glm::dot(toLight / d, -glm::normalize(glm::dvec3(light.forward())));
+            cone += std::clamp((theta - outer) / (inner - outer), 0.0, 1.0);
+        }
         if (cpu::isAmbientVolume(light)) {
             ambient += radiance;
             continue;
@@ -282,6 +299,8 @@ glm::dvec3 lightTypesView(const std::string& view, const cpu::SurfacePoint& s,
     }
     if (view == "direct") return glm::dvec3(cpu::reinhardGamma(direct));
     if (view == "ambient") return glm::dvec3(cpu::reinhardGamma(ambient * s.albedo * s.ao));
+    if (view == "attenuation") return glm::dvec3(attenuation / (1.0 + attenuation));
+    if (view == "cone") return glm::dvec3(cone);
     return sum / (1.0 + sum);
 }
 
@@ -298,8 +317,9 @@ TEST(Reference, LightTypes09TermViewsMatchTheCpu) {
     auto at = [&](int px, int py) -> const ScenePixel& {
         return scene[size_t(py) * kViewWidth + size_t(px)];
     };
-    for (const char* view : {"albedo", "normal", "metallic", "roughness", "ao", "f0", "d", "g", "f",
-                             "specular", "diffuse", "ndotl", "direct", "ambient", "final"}) {
+    for (const char* view :
+         {"albedo", "normal", "metallic", "roughness", "ao", "f0", "d", "g", "f", "specular",
+          "diffuse", "ndotl", "direct", "ambient", "final", "attenuation", "cone"}) {
         SCOPED_TRACE(std::string("--view ") + view);
         const SampleRender render =
             renderSample("09_light_types", dir / (std::string(view) + ".png"),
