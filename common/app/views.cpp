@@ -39,6 +39,9 @@ constexpr Named kNames[] = {
     {View::Emissive, "emissive"},
     {View::Attenuation, "attenuation"},
     {View::Cone, "cone"},
+    {View::Ks, "ks"},
+    {View::Kd, "kd"},
+    {View::FScaleBias, "f-scale-bias"},
 };
 }  // namespace
 

@@ -52,6 +52,10 @@ enum class View {
     // 09's lesson: the point and spot lights' distance attenuation, and the spot's cone
     Attenuation = 23,
     Cone = 24,
+    // the ambient light's weights (04, 05): kS, kD, and the specular part's factor
+    Ks = 25,
+    Kd = 26,
+    FScaleBias = 27,
 };
 
 // 07's and 08's: the glTF material's inputs, the punctual lights' terms, the split sum's.
@@ -94,7 +98,7 @@ inline constexpr View kIrradianceViews[] = {
     View::Roughness, View::Ao,     View::F0,         View::D,
     View::G,         View::F,      View::Specular,   View::Diffuse,
     View::NdotL,     View::Direct, View::Irradiance, View::AmbientDiffuse,
-    View::Ambient};
+    View::Ambient,   View::Ks,     View::Kd};
 // 05's: the direct-light views and every read and term of the split sum.
 inline constexpr View kSplitSumViews[] = {View::Final,
                                           View::Albedo,
@@ -115,7 +119,10 @@ inline constexpr View kSplitSumViews[] = {View::Final,
                                           View::Lut,
                                           View::AmbientDiffuse,
                                           View::AmbientSpecular,
-                                          View::Ambient};
+                                          View::Ambient,
+                                          View::Ks,
+                                          View::Kd,
+                                          View::FScaleBias};
 
 // "final", "albedo", "normal", ..., "d", "g", "f", "specular", "diffuse", "ndotl", "direct",
 // "irradiance", "prefiltered", "lut", "ambient-diffuse", "ambient-specular", "ambient",

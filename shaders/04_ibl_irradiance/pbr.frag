@@ -57,6 +57,7 @@ void main()
                        gammaCorrect(reinhard(Lo)));
     color = iblView(termView, irradiance, vec3(0.0), vec2(0.0), ambient, vec3(0.0),
                     gammaCorrect(reinhard(ambient)), color);
+    color = ambientWeightView(termView, kS, kD, vec3(0.0), color);
 #endif
     FragColor = vec4(color, 1.0);
 }

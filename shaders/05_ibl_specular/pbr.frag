@@ -51,6 +51,7 @@ void main()
     float shown = noIbl ? 0.0 : ao;
     color = iblView(termView, t.reads.irradiance, t.reads.prefilteredColor, t.reads.envBRDF,
                     t.diffuse * shown, t.specular * shown, gammaCorrect(reinhard(ambient)), color);
+    color = ambientWeightView(termView, t.kS, t.kD, t.specularFactor, color);
 #endif
     FragColor = vec4(color, 1.0);
 }

@@ -66,6 +66,8 @@ struct AmbientTerms
     SplitSumReads reads;
     vec3 diffuse;
     vec3 specular;
+    vec3 kS, kD;           // the weights: what the specular part takes, what the diffuse part gets
+    vec3 specularFactor;   // on the prefiltered radiance
 };
 
 AmbientTerms ambientTerms(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness)
@@ -86,6 +88,9 @@ AmbientTerms ambientTerms(vec3 N, vec3 V, vec3 albedo, float metallic, float rou
         vec3 E = F0 * envBRDF.x + envBRDF.y;
         t.diffuse = (1.0 - metallic) * albedo * irradiance * (1.0 - dielectricE);
         t.specular = prefilteredColor * E;
+        t.kS = E;
+        t.kD = vec3((1.0 - metallic) * (1.0 - dielectricE));
+        t.specularFactor = E;
         return t;
     }
     vec3 F = fresnelSchlickRoughness(NdotV, F0, roughness);
@@ -94,6 +99,9 @@ AmbientTerms ambientTerms(vec3 N, vec3 V, vec3 albedo, float metallic, float rou
     vec3 diffuse = irradiance * albedo;
     t.diffuse = kD * diffuse;
     t.specular = prefilteredColor * (F * envBRDF.x + envBRDF.y);
+    t.kS = kS;
+    t.kD = kD;
+    t.specularFactor = F * envBRDF.x + envBRDF.y;
     return t;
 }
 

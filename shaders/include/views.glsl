@@ -40,6 +40,9 @@ const int VIEW_OCCLUSION = 21;
 const int VIEW_EMISSIVE = 22;
 const int VIEW_ATTENUATION = 23;
 const int VIEW_CONE = 24;
+const int VIEW_KS = 25;
+const int VIEW_KD = 26;
+const int VIEW_F_SCALE_BIAS = 27;
 
 // The light-dependent terms, summed over the lights (see addDirectTerms).
 struct DirectSums
@@ -113,6 +116,17 @@ vec3 iblView(int which, vec3 irradiance, vec3 prefiltered, vec2 lut, vec3 ambien
     if (which == VIEW_AMBIENT_DIFFUSE) return viewCompress(ambientDiffuse);
     if (which == VIEW_AMBIENT_SPECULAR) return viewCompress(ambientSpecular);
     if (which == VIEW_AMBIENT) return ambientColor;
+    return otherwise;
+}
+
+// The ambient light's weights (04, 05), as they are, and `otherwise` for any other view: kS, what
+// the specular part takes; kD, what the diffuse part gets; the specular part's factor on the
+// prefiltered radiance (the text's F scale + bias; the exact split sum's F0 scale + bias).
+vec3 ambientWeightView(int which, vec3 kS, vec3 kD, vec3 specularFactor, vec3 otherwise)
+{
+    if (which == VIEW_KS) return kS;
+    if (which == VIEW_KD) return kD;
+    if (which == VIEW_F_SCALE_BIAS) return specularFactor;
     return otherwise;
 }
 #endif  // TERM_VIEWS

@@ -73,6 +73,26 @@ glm::dvec3 gridView(const std::string& view, const cpu::SurfacePoint& s, const g
 
     const SkyReads reads = skyReads.at(glm::dvec3(N), glm::dvec3(V), s.roughness,
                                        lighting.ibl == GridLighting::Ibl::SplitSum);
+    if (view == "ks" || view == "kd" || view == "f-scale-bias") {
+        // the ambient light's weights, as they are: the text's, kS = F = fresnelSchlickRoughness
+        // (F0 + (max(1 - roughness, F0) - F0) (1 - NdotV)^5), kD = (1 - kS)(1 - metallic) and
+        // F scale + bias; the exact split sum's, E = F0 scale + bias for both kS and the factor,
+        // kD = (1 - metallic)(1 - (0.04 scale + bias))
+        const glm::dvec3 F0 = glm::mix(glm::dvec3(0.04), glm::dvec3(s.albedo), double(s.metallic));
+        const double NdotV = std::max(glm::dot(glm::dvec3(N), glm::dvec3(V)), 0.0);
+        const double scale = reads.lut.x, bias = reads.lut.y;
+        glm::dvec3 ks, kd, factor;
+        if (lighting.exactSplitSum) {
+            ks = factor = F0 * scale + bias;
+            kd = glm::dvec3((1.0 - s.metallic) * (1.0 - (0.04 * scale + bias)));
+        } else {
+            ks = F0 +
+                 (glm::max(glm::dvec3(1.0 - s.roughness), F0) - F0) * std::pow(1.0 - NdotV, 5.0);
+            kd = (1.0 - ks) * (1.0 - s.metallic);
+            factor = ks * scale + bias;
+        }
+        return view == "ks" ? ks : view == "kd" ? kd : factor;
+    }
     if (view == "irradiance") return compress(reads.irradiance);
     if (view == "prefiltered") return compress(reads.prefiltered);
     if (view == "lut") return {reads.lut, 0.0};
@@ -166,7 +186,7 @@ TEST(Reference, Irradiance04TermViewsMatchTheCpu) {
     const fs::path dir = testOutputDir("reference_04_views");
     const std::string hdr = writeLinearSky(dir).string();
     std::vector<std::string> views = kInputAndDirectViews;
-    views.insert(views.end(), {"irradiance", "ambient-diffuse", "ambient", "final"});
+    views.insert(views.end(), {"irradiance", "ambient-diffuse", "ambient", "final", "ks", "kd"});
     const GridLighting lighting{.ibl = GridLighting::Ibl::Irradiance};
     compareViews("04_ibl_irradiance", views, {"--hdr", hdr}, lighting, -2.0, dir);
 
@@ -184,11 +204,12 @@ TEST(Reference, SplitSum05TermViewsMatchTheCpu) {
     const std::string hdr = writeLinearSky(dir).string();
     std::vector<std::string> views = kInputAndDirectViews;
     views.insert(views.end(), {"irradiance", "prefiltered", "lut", "ambient-diffuse",
-                               "ambient-specular", "ambient", "final"});
+                               "ambient-specular", "ambient", "final", "ks", "kd", "f-scale-bias"});
     const GridLighting lighting{.ibl = GridLighting::Ibl::SplitSum};
     compareViews("05_ibl_specular", views, {"--hdr", hdr}, lighting, -2.0, dir);
 
-    compareViews("05_ibl_specular", {"ambient-diffuse", "ambient-specular", "final"},
+    compareViews("05_ibl_specular",
+                 {"ambient-diffuse", "ambient-specular", "final", "ks", "kd", "f-scale-bias"},
                  {"--hdr", hdr, "--split-sum", "exact"},
                  {.ibl = GridLighting::Ibl::SplitSum, .exactSplitSum = true}, -2.0, dir / "exact");
     compareViews("05_ibl_specular", {"final"}, {"--hdr", hdr, "--lights", "0"},
