@@ -42,6 +42,8 @@ constexpr Named kNames[] = {
     {View::Ks, "ks"},
     {View::Kd, "kd"},
     {View::FScaleBias, "f-scale-bias"},
+    {View::Visibility, "visibility"},
+    {View::MultipleScattering, "multiple-scattering"},
 };
 }  // namespace
 

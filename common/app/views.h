@@ -56,6 +56,9 @@ enum class View {
     Ks = 25,
     Kd = 26,
     FScaleBias = 27,
+    // 07's and 08's: the BRDF's visibility term, and the image-based light's multiple scattering
+    Visibility = 28,
+    MultipleScattering = 29,
 };
 
 // 07's and 08's: the glTF material's inputs, the punctual lights' terms, the split sum's.
@@ -79,7 +82,9 @@ inline constexpr View kGltfViews[] = {View::Final,
                                       View::Lut,
                                       View::AmbientDiffuse,
                                       View::AmbientSpecular,
-                                      View::Ambient};
+                                      View::Ambient,
+                                      View::Visibility,
+                                      View::MultipleScattering};
 // Every view the direct-light samples have (01, 02), in the order --help lists them: the text's
 // constant ambient term among them.
 inline constexpr View kDirectLightViews[] = {

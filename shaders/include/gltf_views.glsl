@@ -29,7 +29,7 @@ vec3 gltfView(int which, SurfaceMaterial m, vec3 V)
     // term of the lighting is 0 there.
     if (unlit) return vec3(0.0);
 
-    float D = 0.0, G = 0.0, NdotL = 0.0;
+    float D = 0.0, G = 0.0, NdotL = 0.0, Vis = 0.0;
     vec3 F = vec3(0.0), specular = vec3(0.0), diffuse = vec3(0.0), direct = vec3(0.0);
     for (int i = 0; usePunctual && i < punctualLightCount; ++i)
     {
@@ -43,6 +43,7 @@ vec3 gltfView(int which, SurfaceMaterial m, vec3 V)
                               m.roughness);
         D += b.D;
         G += b.Vis * 4.0 * b.NdotL * b.NdotV;
+        Vis += b.Vis;
         F += b.F;
         specular += b.specular;
         diffuse += b.diffuse;
@@ -50,6 +51,7 @@ vec3 gltfView(int which, SurfaceMaterial m, vec3 V)
     }
     if (which == VIEW_D) return encodedAs(viewCompress(vec3(D)));
     if (which == VIEW_G) return encodedAs(viewCompress(vec3(G)));
+    if (which == VIEW_VISIBILITY) return encodedAs(viewCompress(vec3(Vis)));
     if (which == VIEW_F) return encodedAs(viewCompress(F));
     if (which == VIEW_SPECULAR) return encodedAs(viewCompress(specular));
     if (which == VIEW_DIFFUSE) return encodedAs(viewCompress(diffuse));
@@ -65,6 +67,8 @@ vec3 gltfView(int which, SurfaceMaterial m, vec3 V)
                                              m.metallic, m.roughness) * m.occlusion
                           : vec3(0.0);
     if (which == VIEW_AMBIENT) return toneMap(ambient, toneMapper, exposure);
+    if (which == VIEW_MULTIPLE_SCATTERING)
+        return encodedAs(viewCompress(mix(t.dielectricMultiple, t.metalMultiple, m.metallic) * shown));
     return encodedAs(iblView(which, t.reads.irradiance, t.reads.prefilteredColor,
                              t.reads.envBRDF, ambientDiffuse, ambientSpecular, vec3(0.0),
                              vec3(1.0, 0.0, 1.0)));

@@ -129,8 +129,9 @@ vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, 
 uniform bool multipleScattering;
 
 // The radiance a lobe of reflectance F0 returns: single-scattered from the prefiltered
-// environment, multiple-scattered (when on) from the irradiance; `albedo` gets the whole share.
-vec3 specularIbl(vec3 F0, SplitSumReads s, out vec3 albedo)
+// environment, multiple-scattered (when on) from the irradiance; `albedo` gets the whole share,
+// `multipleRadiance` the multiple-scattered radiance alone.
+vec3 specularIbl(vec3 F0, SplitSumReads s, out vec3 albedo, out vec3 multipleRadiance)
 {
     vec3 single = F0 * s.envBRDF.x + s.envBRDF.y;
     vec3 multiple = vec3(0.0);
@@ -141,7 +142,8 @@ vec3 specularIbl(vec3 F0, SplitSumReads s, out vec3 albedo)
         multiple = lost * averageF * single / (1.0 - averageF * lost);
     }
     albedo = single + multiple;
-    return single * s.prefilteredColor + multiple * s.irradiance;
+    multipleRadiance = multiple * s.irradiance;
+    return single * s.prefilteredColor + multipleRadiance;
 }
 
 // The glTF image-based light's parts before occlusion and the reads they come from: the
@@ -153,6 +155,7 @@ struct GltfAmbientTerms
     vec3 diffuse;
     vec3 dielectricSpecular;
     vec3 metal;
+    vec3 dielectricMultiple, metalMultiple;  // the lobes' multiple-scattered radiance (in the above)
 };
 
 GltfAmbientTerms gltfAmbientTerms(vec3 N, vec3 V, vec3 diffuseColor, vec3 F0, vec3 metalColor,
@@ -161,8 +164,8 @@ GltfAmbientTerms gltfAmbientTerms(vec3 N, vec3 V, vec3 diffuseColor, vec3 F0, ve
     GltfAmbientTerms t;
     t.reads = readSplitSum(N, V, roughness);
     vec3 dielectricAlbedo, metalAlbedo;
-    t.dielectricSpecular = specularIbl(F0, t.reads, dielectricAlbedo);
-    t.metal = specularIbl(metalColor, t.reads, metalAlbedo);
+    t.dielectricSpecular = specularIbl(F0, t.reads, dielectricAlbedo, t.dielectricMultiple);
+    t.metal = specularIbl(metalColor, t.reads, metalAlbedo, t.metalMultiple);
     t.diffuse = diffuseColor * t.reads.irradiance * (1.0 - dielectricAlbedo);
     return t;
 }

@@ -43,6 +43,8 @@ const int VIEW_CONE = 24;
 const int VIEW_KS = 25;
 const int VIEW_KD = 26;
 const int VIEW_F_SCALE_BIAS = 27;
+const int VIEW_VISIBILITY = 28;
+const int VIEW_MULTIPLE_SCATTERING = 29;
 
 // The light-dependent terms, summed over the lights (see addDirectTerms).
 struct DirectSums

@@ -35,22 +35,25 @@ namespace fs = std::filesystem;
 
 constexpr int kSize = 400;  // square renders: --size 400x400
 
-
 // 07 on `model`, image-based light off (or, `ibl`, the file's punctual lights), no tone mapping,
 // no MSAA, from `eye` (looking at the model's centre).
 Image render07(const fs::path& dir, const fs::path& model, const glm::vec3& eye,
                std::vector<std::string> extra = {},
                const std::string& sample = "07_gltf_metallic_roughness", bool ibl = false) {
-    std::vector<std::string> args = {"--model", model.string(), ibl ? "--no-punctual" : "--no-ibl",
-                                     "--tonemap", "none",
-                                     "--msaa", "0", "--size",
-                                     std::to_string(kSize) + "x" + std::to_string(kSize),
-                                     "--camera",
-                                     std::to_string(eye.x) + "," + std::to_string(eye.y) + "," +
-                                         std::to_string(eye.z)};
+    std::vector<std::string> args = {
+        "--model",
+        model.string(),
+        ibl ? "--no-punctual" : "--no-ibl",
+        "--tonemap",
+        "none",
+        "--msaa",
+        "0",
+        "--size",
+        std::to_string(kSize) + "x" + std::to_string(kSize),
+        "--camera",
+        std::to_string(eye.x) + "," + std::to_string(eye.y) + "," + std::to_string(eye.z)};
     args.insert(args.end(), extra.begin(), extra.end());
-    const SampleRender render =
-        renderSample(sample, dir / (model.stem().string() + ".png"), args);
+    const SampleRender render = renderSample(sample, dir / (model.stem().string() + ".png"), args);
     EXPECT_EQ(render.run.exitCode, 0) << render.run.err;
     EXPECT_EQ(render.run.err.find("GL error"), std::string::npos) << render.run.err;
     return readImage(render.image, 3);
@@ -82,13 +85,13 @@ std::optional<glm::ivec3> expectedBytes(const Shade& shade, const glm::vec3& nor
     };
     if (!shade(normal)) return std::nullopt;
     const glm::ivec3 centre = bytes(normal);
-    const glm::vec3 a = glm::normalize(glm::cross(normal, std::abs(normal.x) < 0.9f
-                                                              ? glm::vec3(1, 0, 0)
-                                                              : glm::vec3(0, 1, 0)));
+    const glm::vec3 a = glm::normalize(
+        glm::cross(normal, std::abs(normal.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0)));
     const glm::vec3 b = glm::cross(normal, a);
     for (const glm::vec3& turn : {a, -a, b, -b}) {
         const glm::ivec3 moved = bytes(normal + 0.002f * turn);
-        if (glm::any(glm::greaterThan(glm::abs(moved - centre), glm::ivec3(1)))) return std::nullopt;
+        if (glm::any(glm::greaterThan(glm::abs(moved - centre), glm::ivec3(1))))
+            return std::nullopt;
     }
     return centre;
 }
@@ -115,15 +118,21 @@ fs::path writeLitSquare(const fs::path& dir, const std::string& name, const std:
         sceneNodes += ',';  // not "," + std::to_string(i): GCC 12 warns falsely (-Wrestrict)
         sceneNodes += std::to_string(i);
     }
-    return writeTextFile(dir, name, R"({"asset":{"version":"2.0"},
+    return writeTextFile(dir, name,
+                         R"({"asset":{"version":"2.0"},
 "extensionsUsed":["KHR_lights_punctual"],
-)" + squareBuffersJson(2.0f) + R"(
+)" + squareBuffersJson(2.0f) +
+                             R"(
 "materials":[{"name":"grey","pbrMetallicRoughness":{"baseColorFactor":[0.8,0.8,0.8,1],
   "metallicFactor":0,"roughnessFactor":0.7}}],
-"meshes":[{"primitives":[)" + squarePrimitiveJson(0) + R"(]}],
-"extensions":{"KHR_lights_punctual":{"lights":[)" + lightsJson + R"(]}},
-"nodes":[{"mesh":0},)" + lightNodesJson + R"(],
-"scenes":[{"nodes":[)" + sceneNodes + R"(]}],"scene":0})");
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) +
+                             R"(]}],
+"extensions":{"KHR_lights_punctual":{"lights":[)" +
+                             lightsJson + R"(]}},
+"nodes":[{"mesh":0},)" + lightNodesJson +
+                             R"(],
+"scenes":[{"nodes":[)" + sceneNodes +
+                             R"(]}],"scene":0})");
 }
 
 // Compares every well-conditioned pixel of the square with the CPU; `classify` sorts each hit
@@ -154,10 +163,10 @@ void expectSquareMatchesCpu(const fs::path& file, const std::map<std::string, in
             for (int c = 0; c < 3; ++c) {
                 const int diff = std::abs(int(image.at(px, py, c)) - (*expected)[c]);
                 worst = std::max(worst, diff);
-                EXPECT_LE(diff, 2) << file.filename() << " pixel (" << px << ", " << py
-                                   << ") at " << position.x << ", " << position.y << " ("
-                                   << classify(position) << "): rendered "
-                                   << int(image.at(px, py, c)) << ", CPU " << (*expected)[c];
+                EXPECT_LE(diff, 2)
+                    << file.filename() << " pixel (" << px << ", " << py << ") at " << position.x
+                    << ", " << position.y << " (" << classify(position) << "): rendered "
+                    << int(image.at(px, py, c)) << ", CPU " << (*expected)[c];
             }
             ++counts[classify(position)];
         }
@@ -177,14 +186,15 @@ TEST(Reference, Gltf07PointLightRangeWindow) {
         dir, "range.gltf", R"({"type":"point","intensity":3,"range":1.5})",
         R"({"translation":[0,0,0.5],"extensions":{"KHR_lights_punctual":{"light":0}}})", 1);
     const double edge = std::sqrt(1.5 * 1.5 - 0.5 * 0.5);
-    expectSquareMatchesCpu(
-        file,
-        {{"well inside", 500}, {"just inside the range", 40}, {"just outside the range", 40},
-         {"outside", 500}},
-        rings({{edge - 0.1, "well inside"},
-               {edge, "just inside the range"},
-               {edge + 0.1, "just outside the range"}},
-              "outside"));
+    expectSquareMatchesCpu(file,
+                           {{"well inside", 500},
+                            {"just inside the range", 40},
+                            {"just outside the range", 40},
+                            {"outside", 500}},
+                           rings({{edge - 0.1, "well inside"},
+                                  {edge, "just inside the range"},
+                                  {edge + 0.1, "just outside the range"}},
+                                 "outside"));
 }
 
 TEST(Reference, Gltf07SpotLightCones) {
@@ -228,7 +238,8 @@ TEST(Reference, Gltf07DirectionalAndPointTogether) {
 TEST(Reference, Gltf07MaskKeepsTexelsAtOrAboveTheCutoff) {
     const fs::path dir = testOutputDir("reference_07_mask");
     Image alphas{16, 16, 4, {}};
-    for (int i = 0; i < 256; ++i) alphas.pixels.insert(alphas.pixels.end(), {255, 255, 255, std::uint8_t(i)});
+    for (int i = 0; i < 256; ++i)
+        alphas.pixels.insert(alphas.pixels.end(), {255, 255, 255, std::uint8_t(i)});
     writePng(dir / "alphas.png", alphas);
     const fs::path file = writeTextFile(dir, "mask.gltf", R"({"asset":{"version":"2.0"},
 "extensionsUsed":["KHR_materials_unlit"],
@@ -316,9 +327,9 @@ SphereCheck compareSpheres(const fs::path& dir, const std::string& sample, const
             for (int c = 0; c < 3; ++c) {
                 const int diff = std::abs(int(image.at(px, py, c)) - (*expected)[c]);
                 check.worst = std::max(check.worst, diff);
-                EXPECT_LE(diff, 2) << material.name << " pixel (" << px << ", " << py
-                                   << "): rendered " << int(image.at(px, py, c)) << ", CPU "
-                                   << (*expected)[c];
+                EXPECT_LE(diff, 2)
+                    << material.name << " pixel (" << px << ", " << py << "): rendered "
+                    << int(image.at(px, py, c)) << ", CPU " << (*expected)[c];
             }
             ++check.compared[material.name];
             ++check.total;
@@ -334,8 +345,8 @@ SphereCheck compareShowcaseSpheres(
     const std::string& name,
     const std::function<bool(const Material&, const Image& mr, float& metallic, float& roughness)>&
         materialOf,
-    const std::vector<std::string>& extra = {},
-    const ShadeSurface& shadeSurface = shadeUnderLights, bool ibl = false) {
+    const std::vector<std::string>& extra = {}, const ShadeSurface& shadeSurface = shadeUnderLights,
+    bool ibl = false) {
     std::map<std::string, Image> textures;  // each material's, read once (not at every pixel)
     return compareSpheres(
         testOutputDir("reference_07_spheres_" + name), "07_gltf_metallic_roughness",
@@ -352,9 +363,8 @@ SphereCheck compareShowcaseSpheres(
             const Image& mr = found->second;
             float metallic = 0.0f, roughness = 0.0f;
             if (!materialOf(material, mr, metallic, roughness)) return std::nullopt;
-            return cpu::metallicRoughnessSurface(position, normal,
-                                                 glm::vec3(material.baseColorFactor), metallic,
-                                                 roughness);
+            return cpu::metallicRoughnessSurface(
+                position, normal, glm::vec3(material.baseColorFactor), metallic, roughness);
         },
         extra, shadeSurface, ibl);
 }
@@ -412,8 +422,8 @@ glm::vec3 encodedAs(const glm::dvec3& v) {
 // summed over the lights that reach the point (NdotL > 0, radiance above 0), as x / (1 + x); the
 // direct light alone through the tone mapper (none here: clamped to [0, 1]). The terms are
 // cpu::gltfBrdf's; G = Vis x 4 NdotL NdotV.
-glm::vec3 gltfPunctualView(const std::string& view, const cpu::GltfSurface& s,
-                           const glm::vec3& eye, std::span<const PunctualLight> lights) {
+glm::vec3 gltfPunctualView(const std::string& view, const cpu::GltfSurface& s, const glm::vec3& eye,
+                           std::span<const PunctualLight> lights) {
     const glm::vec3 N = s.normal, V = glm::normalize(eye - s.position);
     if (view == "base-color") return encodedAs(glm::dvec3(s.metalColor));
     if (view == "normal") return encodedAs(0.5 + 0.5 * glm::dvec3(N));
@@ -432,6 +442,7 @@ glm::vec3 gltfPunctualView(const std::string& view, const cpu::GltfSurface& s,
         const cpu::GltfBrdf b = cpu::gltfBrdf(N, V, L, s);
         if (view == "d") sum += glm::dvec3(b.D);
         if (view == "g") sum += glm::dvec3(b.Vis * 4.0f * b.NdotL * b.NdotV);
+        if (view == "visibility") sum += glm::dvec3(b.Vis);
         if (view == "f") sum += glm::dvec3(b.F);
         if (view == "specular") sum += glm::dvec3(b.specular);
         if (view == "diffuse") sum += glm::dvec3(b.diffuse);
@@ -463,11 +474,10 @@ void expectViewCompared(const std::string& label, const SphereCheck& check, int 
 TEST(Reference, Gltf07TermViewsMatchTheCpu) {
     for (const std::string view :
          {"base-color", "normal", "metallic", "roughness", "occlusion", "emissive", "f0", "d", "g",
-          "f", "specular", "diffuse", "ndotl", "direct"}) {
+          "visibility", "f", "specular", "diffuse", "ndotl", "direct"}) {
         SCOPED_TRACE("--view " + view);
-        const SphereCheck check = compareShowcaseSpheres(
-            "view_" + view, solidTexture, {"--view", view},
-            punctualViewShade(view));
+        const SphereCheck check = compareShowcaseSpheres("view_" + view, solidTexture,
+                                                         {"--view", view}, punctualViewShade(view));
         expectViewCompared("--view " + view, check, 1500, 10);
     }
 }
@@ -480,10 +490,10 @@ TEST(Reference, Gltf07UnlitMaterialsHaveNoLightingTerms) {
     const fs::path dir = testOutputDir("reference_07_unlit_views");
     std::map<std::string, Image> views;
     for (const std::string view : {"base-color", "d", "direct"}) {
-        const SampleRender render = renderSample(
-            "07_gltf_metallic_roughness", dir / (view + ".png"),
-            {"--model", (modelDir() / "unlit_showcase.gltf").string(), "--msaa", "0", "--size",
-             "320x180", "--view", view});
+        const SampleRender render =
+            renderSample("07_gltf_metallic_roughness", dir / (view + ".png"),
+                         {"--model", (modelDir() / "unlit_showcase.gltf").string(), "--msaa", "0",
+                          "--size", "320x180", "--view", view});
         ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
         EXPECT_EQ(render.run.err.find("no active uniform"), std::string::npos) << render.run.err;
         views[view] = readImage(render.image, 3);
@@ -517,7 +527,7 @@ TEST(Reference, Gltf07IblTermViewsMatchTheCpu) {
     const LinearSkyReads skyReads;
     auto compress = [](const glm::dvec3& x) { return x / (1.0 + x); };
     for (const std::string view : {"irradiance", "prefiltered", "lut", "ambient-diffuse",
-                                   "ambient-specular", "ambient", "final"}) {
+                                   "ambient-specular", "ambient", "final", "multiple-scattering"}) {
         SCOPED_TRACE("--view " + view);
         const SphereCheck check = compareShowcaseSpheres(
             "ibl_view_" + view, solidTexture, {"--hdr", hdr, "--view", view},
@@ -531,6 +541,22 @@ TEST(Reference, Gltf07IblTermViewsMatchTheCpu) {
                 if (view == "irradiance") return encodedAs(compress(reads.irradiance));
                 if (view == "prefiltered") return encodedAs(compress(reads.prefiltered));
                 if (view == "lut") return encodedAs({reads.lut, 0.0});
+                if (view == "multiple-scattering") {
+                    // Fdez-Aguera's share, from the LUT's scale and bias: a white lobe loses
+                    // 1 - (scale + bias); after further bounces, each tinted by the mean Fresnel
+                    // F0 + (1 - F0) / 21, E_ms = lost F_avg E_ss / (1 - F_avg lost), lit by the
+                    // irradiance; the dielectric's lobe and the metal's mixed by metallic
+                    const double scale = reads.lut.x, bias = reads.lut.y,
+                                 lost = 1.0 - (scale + bias);
+                    const auto share = [&](const glm::dvec3& F0) {
+                        const glm::dvec3 single = F0 * scale + bias;
+                        const glm::dvec3 average = F0 + (1.0 - F0) / 21.0;
+                        return lost * average * single / (1.0 - average * lost) * reads.irradiance;
+                    };
+                    return encodedAs(
+                        compress(glm::mix(share(glm::dvec3(s.F0)), share(glm::dvec3(s.metalColor)),
+                                          double(s.metallic))));
+                }
                 const cpu::GltfAmbient a =
                     cpu::gltfAmbient(s, glm::vec3(reads.irradiance), glm::vec3(reads.prefiltered),
                                      glm::vec2(reads.lut), true);
@@ -554,7 +580,8 @@ TEST(Reference, Gltf07IblTermViewsMatchTheCpu) {
 TEST(Reference, Gltf07OcclusionAndEmissiveViews) {
     const fs::path dir = testOutputDir("reference_07_square_views");
     Image occlusion{2, 2, 3, {}};
-    for (int i = 0; i < 4 * 3; ++i) occlusion.pixels.push_back(std::uint8_t(i % 3 == 0 ? 128 : i % 3 == 1 ? 20 : 240));
+    for (int i = 0; i < 4 * 3; ++i)
+        occlusion.pixels.push_back(std::uint8_t(i % 3 == 0 ? 128 : i % 3 == 1 ? 20 : 240));
     writePng(dir / "occlusion.png", occlusion);
     const fs::path file = writeTextFile(dir, "square.gltf", R"({"asset":{"version":"2.0"},
 )" + squareBuffersJson(1.0f) + R"(
@@ -622,8 +649,8 @@ TEST(Reference, Gltf08SpecularGlossinessSpheresMatchTheCpu) {
 // extension's conversion (base colour = the diffuse factor; f0 = the specular; roughness =
 // 1 - glossiness; metallic 0) and the sun's terms through 07's BRDF, against the CPU.
 TEST(Reference, Gltf08TermViewsMatchTheCpu) {
-    for (const std::string view : {"base-color", "metallic", "roughness", "f0", "d", "specular",
-                                   "diffuse", "direct"}) {
+    for (const std::string view :
+         {"base-color", "metallic", "roughness", "f0", "d", "specular", "diffuse", "direct"}) {
         SCOPED_TRACE("--view " + view);
         const SphereCheck check = compareSpheres(
             testOutputDir("reference_08_views_" + view), "08_gltf_specular_glossiness",
@@ -632,14 +659,13 @@ TEST(Reference, Gltf08TermViewsMatchTheCpu) {
                const glm::vec3& normal) -> std::optional<cpu::GltfSurface> {
                 if (m.baseColorTexture.present() || m.specularGlossinessTexture.present())
                     return std::nullopt;
-                cpu::GltfSurface surface = cpu::specularGlossinessSurface(
-                    position, normal, glm::vec3(m.baseColorFactor), m.specularFactor,
-                    m.glossinessFactor);
+                cpu::GltfSurface surface =
+                    cpu::specularGlossinessSurface(position, normal, glm::vec3(m.baseColorFactor),
+                                                   m.specularFactor, m.glossinessFactor);
                 surface.metalColor = glm::vec3(m.baseColorFactor);  // what base-color shows
                 return surface;
             },
-            {"--view", view},
-            punctualViewShade(view));
+            {"--view", view}, punctualViewShade(view));
         expectViewCompared("08 --view " + view, check, 3000, 8);
     }
 }
@@ -653,12 +679,13 @@ TEST(Reference, Gltf08BothWorkflowsDrawTheSameMaterials) {
     for (const bool ibl : {true, false}) {
         std::vector<Image> images;
         for (const char* half : {"pbr_workflows_mr", "pbr_workflows_sg"}) {
-            std::vector<std::string> args = {"--model", (modelDir() / (std::string(half) + ".gltf")).string(),
+            std::vector<std::string> args = {"--model",
+                                             (modelDir() / (std::string(half) + ".gltf")).string(),
                                              "--size", "640x360"};
             if (!ibl) args.push_back("--no-ibl");
-            const SampleRender render = renderSample(
-                "08_gltf_specular_glossiness",
-                dir / (std::string(half) + (ibl ? "" : "_no_ibl") + ".png"), args);
+            const SampleRender render =
+                renderSample("08_gltf_specular_glossiness",
+                             dir / (std::string(half) + (ibl ? "" : "_no_ibl") + ".png"), args);
             ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
             images.push_back(readImage(render.image, 3));
         }
