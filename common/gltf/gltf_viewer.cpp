@@ -67,11 +67,11 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         "--model", "FILE",
         "a .gltf or .glb to draw (default: " + config.defaultModelDescription + ")"));
     // The output and the parts of the light: read every frame (live in the window's panel).
-    flags.push_back(FlagSpec::choice(
-                        "--tonemap", cpu::toneMapperChoices(cpu::ToneMapper::KhronosNeutral),
-                        "the tone mapper after exposure (default khronos-neutral: keeps base "
-                        "colours true up to 0.8, then rolls highlights off to white)")
-                        .asLive());
+    flags.push_back(
+        FlagSpec::choice("--tonemap", cpu::toneMapperChoices(cpu::ToneMapper::KhronosNeutral),
+                         "the tone mapper after exposure (default khronos-neutral: keeps base "
+                         "colours true up to 0.8, then rolls highlights off to white)")
+            .asLive());
     flags.push_back(FlagSpec::number("--exposure", "FACTOR",
                                      "a linear factor on the light before tone mapping", 1e-4, 1e4,
                                      1.0)
@@ -79,6 +79,11 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     flags.push_back(FlagSpec::toggle("--no-ibl", "leave out the image-based light").asLive());
     flags.push_back(
         FlagSpec::toggle("--no-punctual", "leave out the file's punctual lights").asLive());
+    flags.push_back(FlagSpec::integer("--light", "K",
+                                      "the file's punctual light K alone (1 the first), its terms "
+                                      "alone in a view (0: all of them)",
+                                      0, GltfRenderer::kMaxLights, 0)
+                        .asLive());
     flags.push_back(viewFlag(kGltfViews).asLive());
     flags.push_back(FlagSpec::toggle("--single-scattering",
                                      "image-based light without the multiple-scattering energy "
@@ -119,7 +124,13 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         Shader& shader = app.shader("common/gltf.vert", "common/gltf.frag", viewDefines(view));
         std::unique_ptr<GltfRenderer>& renderer = renderers[&shader];
         if (!renderer) renderer = std::make_unique<GltfRenderer>(shader);
-        renderer->setLights(punctual ? lights : std::span<const PunctualLight>());
+        // --light K: that light alone (none where the file has fewer)
+        const int alone = app.flagInt("--light");
+        std::span<const PunctualLight> shown = punctual ? lights : std::span<const PunctualLight>();
+        if (alone > 0)
+            shown = size_t(alone) <= shown.size() ? shown.subspan(size_t(alone - 1), 1)
+                                                  : std::span<const PunctualLight>();
+        renderer->setLights(shown);
         // Made again after R: the cache's keys hold the shaders' code, so an edited IBL shader
         // is computed anew.
         if (ibl && (!cache || app.shadersReloaded())) {

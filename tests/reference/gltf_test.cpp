@@ -516,6 +516,22 @@ TEST(Reference, Gltf07UnlitMaterialsHaveNoLightingTerms) {
     }
 }
 
+// One punctual light alone (--light K): the showcase's second light by itself, in the summed views
+// and the picture, against the CPU given that light alone.
+TEST(Reference, Gltf07OneLightAlone) {
+    for (const std::string view : {"d", "specular", "direct"}) {
+        SCOPED_TRACE("--view " + view);
+        const SphereCheck check = compareShowcaseSpheres(
+            "light_2_" + view, solidTexture, {"--light", "2", "--view", view},
+            [&](const cpu::GltfSurface& s, const glm::vec3& eye,
+                std::span<const PunctualLight> lights) -> std::optional<glm::vec3> {
+                if (lights.size() < 2) return std::nullopt;
+                return gltfPunctualView(view, s, eye, lights.subspan(1, 1));
+            });
+        expectViewCompared("--light 2 --view " + view, check, 1500, 10);
+    }
+}
+
 // 07's image-based light's views on the showcase's spheres in the linear sky (tests/reference/
 // linear_sky.h: the irradiance, the prefiltered levels and the LUT in closed form), punctual
 // lights off, no tone mapping: the reads as x / (1 + x) (the LUT's scale and bias as they are),
