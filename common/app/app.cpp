@@ -178,13 +178,15 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     const char* script = std::getenv("PBR_PANEL_SCRIPT");
     scripted_ = script && *script;
     if (scripted_) script_ = readPanelScript(script);
-    if (Panel::available() && (context_->windowed() || options_.panel || scripted_)) {
+    if (Panel::available() &&
+        (context_->windowed() || options_.panel || options_.caption || scripted_)) {
         panel_ = std::make_unique<Panel>(config_.flags, [this](const std::string& text) {
             context_->setClipboard(text);
             if (!context_->windowed())
                 std::printf("%s: copied: %s\n", config_.name.c_str(), text.c_str());
         });
-        panelShown_ = !(context_->windowed() && options_.benchmark);
+        // (--caption alone draws the overlay's labels and caption without the panel)
+        panelShown_ = context_->windowed() ? !options_.benchmark : options_.panel || scripted_;
     }
     if (context_->windowed() && !config_.orbitCamera && !config_.fixedView) {
         context_->setCursorCaptured(mouseLook());
@@ -349,6 +351,13 @@ void labelSphereGrid(App& app, const SphereGrid& grid, float roughnessOffset,
     }
 }
 
+std::optional<View> App::currentView() const {
+    const bool hasViews = std::any_of(config_.flags.begin(), config_.flags.end(),
+                                      [](const FlagSpec& spec) { return spec.name == "--view"; });
+    if (!hasViews) return std::nullopt;
+    return viewNamed(flagChoice("--view"));
+}
+
 std::vector<FlagSpec> gridLightFlags() {
     return {FlagSpec::integer("--lights", "N", "use the first N of the 4 point lights", 0, 4, 4)
                 .asLive(),
@@ -361,7 +370,8 @@ std::vector<FlagSpec> gridLightFlags() {
 
 std::span<const glm::vec3> gridLights(const App& app) {
     const std::span<const glm::vec3> all(kGridLightPositions);
-    if (const int alone = app.flagInt("--light"); alone > 0) return all.subspan(size_t(alone - 1), 1);
+    if (const int alone = app.flagInt("--light"); alone > 0)
+        return all.subspan(size_t(alone - 1), 1);
     return all.first(size_t(app.flagInt("--lights")));
 }
 
@@ -616,10 +626,19 @@ void App::endFrame() {
             std::fprintf(stderr, "%s\n", note.c_str());
         }
     }
+    // A view's caption: in a window and a page always, in the picture with --caption (or
+    // --panel).
+    const std::string caption = currentView() ? viewCaption(*currentView()) : std::string();
+    if (panel_ && !caption.empty() && (context_->windowed() || options_.panel || options_.caption))
+        panel_->caption(caption, viewScale(*currentView()));
+#ifdef PBR_WEBGL
+    if (context_->windowed()) web::showCaption(caption);
+#endif
     // --panel: the panel and the labels are part of the picture; in a window they are drawn over
-    // the picture shown, and F12 writes what a headless run writes.
+    // the picture shown, and F12 writes what a headless run writes. --caption: the labels and
+    // the caption without the panel.
     if (panel_) panel_->end();
-    const bool panelInPicture = panel_ && options_.panel;
+    const bool panelInPicture = panel_ && (options_.panel || options_.caption);
     target_->resolve();
     if (panelInPicture) {
         target_->bindResolved();

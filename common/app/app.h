@@ -22,6 +22,7 @@
 
 #include "app/options.h"
 #include "app/panel.h"
+#include "app/views.h"
 #include "context/context.h"
 #include "gl/framebuffer.h"
 #include "gl/shader.h"
@@ -151,6 +152,8 @@ private:
     void installDebugOutput();
     void checkGlErrors(const char* where);
     void writeScreenshot(const std::string& path);
+    // The view the sample's --view shows now (nullopt: the sample has no views).
+    std::optional<View> currentView() const;
     // The panel's (or a page's) pause and step buttons: time stops, runs on, or steps 1/60 s.
     void pauseOrStep(bool pause, bool step);
     void updatePanel(const InputFrame& input);

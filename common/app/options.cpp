@@ -45,6 +45,10 @@ constexpr CommonFlag kCommonFlags[] = {
     {"--panel", nullptr,
      "draw the live panel into the picture too, headless as well (a window always shows it; "
      "Tab hides it)"},
+    {"--caption", nullptr,
+     "under a view (--view), a caption in the picture, headless as well: the view's name, its "
+     "formula and encoding, and a scale bar for mapped values (a window and a page always show "
+     "it)"},
     {"--backend", "osmesa|egl|egl-software",
      "offscreen backend (implies --headless; default: the first that works of osmesa, egl); "
      "egl may pick a GPU, egl-software never does"},
@@ -388,6 +392,8 @@ Options parseOptions(std::span<const std::string> args, std::span<const FlagSpec
             options.headless = true;
         } else if (flag == "--fov") {
             options.fov = parseNumberFlag("--fov", value, 1.0, 45.0);
+        } else if (flag == "--caption") {
+            options.caption = true;
         } else if (flag == "--panel") {
             options.panel = true;
         } else if (flag == "--benchmark") {
@@ -465,7 +471,8 @@ std::string usageText(const std::string& program, std::span<const FlagSpec> samp
     out << "usage: " << program << " [flags]\n\nflags every sample takes:\n";
     for (const CommonFlag& flag : kCommonFlags) {
         if (kInPage &&
-            (std::string(flag.name) == "--backend" || std::string(flag.name) == "--panel"))
+            (std::string(flag.name) == "--backend" || std::string(flag.name) == "--panel" ||
+             std::string(flag.name) == "--caption"))
             continue;
         std::string left = flag.name;
         if (flag.valueName) left.append(" ").append(flag.valueName);

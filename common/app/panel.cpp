@@ -27,6 +27,7 @@ std::vector<std::string> Panel::begin(const PanelInput&, glm::ivec2,
     return {};
 }
 void Panel::label(glm::vec2, const std::string&) {}
+void Panel::caption(const std::string&, ViewScale) {}
 void Panel::end() {}
 bool Panel::wantsMouse() const {
     return false;
@@ -266,6 +267,49 @@ void Panel::label(glm::vec2 pixel, const std::string& text) {
                         ImVec2(at.x + size.x + 3.0f, at.y + size.y + 1.0f), IM_COL32(0, 0, 0, 150),
                         3.0f);
     list->AddText(at, IM_COL32(235, 235, 235, 255), text.c_str());
+}
+
+void Panel::caption(const std::string& text, ViewScale scale) {
+    ImGui::SetCurrentContext(state_->context);
+    ImDrawList* list = ImGui::GetBackgroundDrawList();  // under the panel, over the picture
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    const float wrap = std::max(display.x - 2.0f * kMargin - 8.0f, 40.0f);
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str(), nullptr, false, wrap);
+    const float barHeight = scale == ViewScale::None ? 0.0f : 26.0f;
+    const float barWidth = std::min(256.0f, wrap);
+    // at the top left: the texts' subjects fill the pictures' middles and bottoms, and the panel
+    // sits at the top right
+    const ImVec2 at(kMargin + 4.0f, kMargin + 3.0f);
+    list->AddRectFilled(ImVec2(at.x - 4.0f, at.y - 3.0f),
+                        ImVec2(at.x + std::max(size.x, barHeight > 0.0f ? barWidth : 0.0f) + 4.0f,
+                               at.y + size.y + barHeight + 1.0f),
+                        IM_COL32(0, 0, 0, 190), 3.0f);
+    list->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, IM_COL32(235, 235, 235, 255),
+                  text.c_str(), nullptr, wrap);
+    if (scale == ViewScale::None) return;
+    // the bar: the picture's levels 0 to 255, left to right (a view's value v is level 255 v)
+    const ImVec2 bar(at.x, at.y + size.y + 3.0f);
+    list->AddRectFilledMultiColor(bar, ImVec2(bar.x + barWidth, bar.y + 8.0f),
+                                  IM_COL32(0, 0, 0, 255), IM_COL32(255, 255, 255, 255),
+                                  IM_COL32(255, 255, 255, 255), IM_COL32(0, 0, 0, 255));
+    const auto tick = [&](float level, const char* value) {
+        const float x = std::round(bar.x + level * barWidth);
+        list->AddLine(ImVec2(x, bar.y + 8.0f), ImVec2(x, bar.y + 11.0f),
+                      IM_COL32(235, 235, 235, 255));
+        const float w = ImGui::CalcTextSize(value).x;
+        list->AddText(ImVec2(std::clamp(x - 0.5f * w, bar.x, bar.x + barWidth - w), bar.y + 11.0f),
+                      IM_COL32(235, 235, 235, 255), value);
+    };
+    if (scale == ViewScale::AsItIs) {
+        tick(0.0f, "0");
+        tick(0.5f, "0.5");
+        tick(1.0f, "1");
+    } else {  // x / (1 + x): x = 0, 0.25, 1, 4 at 0, 0.2, 0.5, 0.8
+        tick(0.0f, "0");
+        tick(0.2f, "0.25");
+        tick(0.5f, "1");
+        tick(0.8f, "4");
+    }
 }
 
 void Panel::end() {

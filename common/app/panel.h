@@ -23,6 +23,7 @@
 #include <glm/glm.hpp>
 
 #include "app/options.h"
+#include "app/views.h"
 
 namespace pbr {
 
@@ -64,6 +65,10 @@ public:
                                    bool showPanel = true);
     // A label over the picture at `pixel` (from the top-left), centred there.
     void label(glm::vec2 pixel, const std::string& text);
+    // A view's caption at the picture's top left (viewCaption), with a scale bar under it:
+    // grey levels 0 to 255 across, ticked where a value as it is (0, 0.5, 1), or x of
+    // x / (1 + x) (0, 0.25, 1, 4), lands.
+    void caption(const std::string& text, ViewScale scale);
     // Ends the frame's layer: what draw() draws.
     void end();
     // The cursor is over the panel, or one of its controls holds the mouse (a slider dragged

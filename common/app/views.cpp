@@ -54,6 +54,77 @@ std::string_view viewName(View view) {
     throw Error("view " + std::to_string(int(view)) + " has no name");
 }
 
+namespace {
+// What each view shows, and its encoding (the scale bar follows from the encoding).
+struct Caption {
+    View view;
+    const char* shows;
+    ViewScale scale;
+};
+constexpr const char* kCompressed = "x / (1 + x)";
+constexpr Caption kCaptions[] = {
+    {View::Albedo, "the material's albedo, linear", ViewScale::AsItIs},
+    {View::BaseColor, "factor x vertex colour x texture, linear", ViewScale::AsItIs},
+    {View::Normal, "the world-space shading normal N, as 0.5 + 0.5 N", ViewScale::None},
+    {View::Metallic, "the material's metallic", ViewScale::AsItIs},
+    {View::Roughness, "the material's roughness", ViewScale::AsItIs},
+    {View::Ao, "the ambient occlusion", ViewScale::AsItIs},
+    {View::Occlusion, "1 + strength (texture's R - 1)", ViewScale::AsItIs},
+    {View::Emissive, "factor x texture, linear", ViewScale::AsItIs},
+    {View::F0, "the reflectance at normal incidence, mix(0.04, albedo, metallic)",
+     ViewScale::AsItIs},
+    {View::D, "the GGX distribution D, summed over the lights that reach the point",
+     ViewScale::Compressed},
+    {View::G, "the Smith masking-shadowing G, summed likewise", ViewScale::Compressed},
+    {View::Visibility, "the visibility G / (4 NdotL NdotV), summed likewise",
+     ViewScale::Compressed},
+    {View::F, "Fresnel F, summed likewise", ViewScale::Compressed},
+    {View::Specular, "the specular term, summed likewise", ViewScale::Compressed},
+    {View::Diffuse, "the diffuse term, summed likewise", ViewScale::Compressed},
+    {View::NdotL, "NdotL, summed likewise", ViewScale::Compressed},
+    {View::Direct, "the direct light alone, tone-mapped as the picture", ViewScale::None},
+    {View::Ambient, "the ambient light alone, tone-mapped as the picture", ViewScale::None},
+    {View::Irradiance, "the irradiance map at N", ViewScale::Compressed},
+    {View::Prefiltered, "the prefiltered map along R at the roughness's level",
+     ViewScale::Compressed},
+    {View::Lut, "the BRDF LUT's scale (red) and bias (green) at (NdotV, roughness)",
+     ViewScale::AsItIs},
+    {View::AmbientDiffuse, "the ambient light's diffuse part x ao", ViewScale::Compressed},
+    {View::AmbientSpecular, "the ambient light's specular part x ao", ViewScale::Compressed},
+    {View::Attenuation, "1 / (c + l d + q d^2), summed over the point and spot lights",
+     ViewScale::Compressed},
+    {View::Cone, "the spot's cone factor", ViewScale::AsItIs},
+    {View::Ks, "kS, what the ambient light's specular part takes", ViewScale::AsItIs},
+    {View::Kd, "kD, what its diffuse part gets", ViewScale::AsItIs},
+    {View::FScaleBias, "F x scale + bias, the factor on the prefiltered radiance",
+     ViewScale::AsItIs},
+    {View::MultipleScattering, "the share multiple scattering adds to the lobes",
+     ViewScale::Compressed},
+};
+
+const Caption* captionOf(View view) {
+    for (const Caption& caption : kCaptions) {
+        if (caption.view == view) return &caption;
+    }
+    return nullptr;
+}
+}  // namespace
+
+std::string viewCaption(View view) {
+    const Caption* caption = captionOf(view);
+    if (!caption) return "";
+    const char* encoding = caption->scale == ViewScale::Compressed ? kCompressed
+                           : caption->scale == ViewScale::AsItIs   ? "as it is"
+                                                                   : "";
+    return std::string(viewName(view)) + ": " + caption->shows +
+           (*encoding ? std::string("; ") + encoding : std::string());
+}
+
+ViewScale viewScale(View view) {
+    const Caption* caption = captionOf(view);
+    return caption ? caption->scale : ViewScale::None;
+}
+
 std::string viewConstant(View view) {
     std::string constant = "VIEW_";
     for (char c : viewName(view))

@@ -133,6 +133,14 @@ inline constexpr View kSplitSumViews[] = {View::Final,
 // "irradiance", "prefiltered", "lut", "ambient-diffuse", "ambient-specular", "ambient",
 // "base-color", "occlusion", "emissive".
 std::string_view viewName(View view);
+// What a view's picture says beside it, one line: its name, what it shows (in the READMEs'
+// words, shortened) and its encoding ("d: the GGX distribution D, summed over the lights that
+// reach the point; x / (1 + x)"); "" for the picture itself. The READMEs define each exactly.
+std::string viewCaption(View view);
+// How a view's values map to the picture's levels, for a scale bar under its caption: none (a
+// normal, or a tone-mapped light), as they are (0 to 1), or x / (1 + x) (0 to infinity).
+enum class ViewScale { None, AsItIs, Compressed };
+ViewScale viewScale(View view);
 // The shaders' VIEW_ constant of a view: "VIEW_NDOTL", "VIEW_AMBIENT_DIFFUSE".
 std::string viewConstant(View view);
 // --view NAME, a choice of `views` (the first is the default).

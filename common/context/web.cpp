@@ -58,6 +58,9 @@ EM_JS(void, pbr_mouse_hint, (const char* text), {
 EM_JS(void, pbr_show_frame, (double milliseconds, const char* command, int paused), {
     if (Module["pbrShowFrame"]) Module["pbrShowFrame"](milliseconds, UTF8ToString(command), paused);
 });
+EM_JS(void, pbr_show_caption, (const char* text), {
+    if (Module["pbrShowCaption"]) Module["pbrShowCaption"](UTF8ToString(text));
+});
 EM_JS(int, pbr_take_clock_presses, (), {
     var pressed = Module["pbrClock"] || 0;
     Module["pbrClock"] = 0;
@@ -107,6 +110,10 @@ void mouseHint(const std::string& text) {
 
 void showFrame(double milliseconds, const std::string& commandLine, bool paused) {
     pbr_show_frame(milliseconds, commandLine.c_str(), paused ? 1 : 0);
+}
+
+void showCaption(const std::string& text) {
+    pbr_show_caption(text.c_str());
 }
 
 ClockPresses takeClockPresses() {

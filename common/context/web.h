@@ -48,6 +48,8 @@ void mouseHint(const std::string& text);
 // The bar under a shown picture, as the window's panel has it: the frame time (negative: none
 // yet), the command line of the view, and whether time stands (pause or run).
 void showFrame(double milliseconds, const std::string& commandLine, bool paused);
+// A view's caption over the picture's top left ("" for none).
+void showCaption(const std::string& text);
 // The bar's pause and step buttons pressed since the last frame.
 struct ClockPresses {
     bool pause = false, step = false;

@@ -62,6 +62,16 @@ std::vector<GoldenCase> goldenCases() {
     // The live panel drawn into the picture (--panel), over 01's grid: the controls made from
     // 01's flag declarations, the command line of the view.
     cases.push_back({"01_panel", "01_lighting", {"--panel", "--size", "960x540"}, 0.15});
+    // A view's caption in the picture (--caption): its name, formula and encoding, the scale bar
+    // of x / (1 + x), over 01's d; and 07's base colour, whose scale is as it is.
+    cases.push_back({"01_view_d_caption",
+                     "01_lighting",
+                     {"--view", "d", "--caption", "--size", "960x540"},
+                     0.1});
+    cases.push_back({"07_view_base_color_caption",
+                     "07_gltf_metallic_roughness",
+                     {"--view", "base-color", "--caption", "--size", "960x540"},
+                     0.1});
     // 01's term views that teach most (01's README, "Term views"), at a small size.
     for (const char* view : {"d", "g", "f", "diffuse", "normal"}) {
         cases.push_back({std::string("01_view_") + view,
@@ -84,12 +94,15 @@ std::vector<GoldenCase> goldenCases() {
         std::replace(name.begin(), name.end(), '-', '_');
         cases.push_back({name, "05_ibl_specular", {"--view", view, "--size", "480x270"}, 0.1});
     }
-    cases.push_back(
-        {"04_view_irradiance", "04_ibl_irradiance", {"--view", "irradiance", "--size", "480x270"}, 0.1});
+    cases.push_back({"04_view_irradiance",
+                     "04_ibl_irradiance",
+                     {"--view", "irradiance", "--size", "480x270"},
+                     0.1});
     cases.push_back(
         {"04_lights_0", "04_ibl_irradiance", {"--lights", "0", "--size", "480x270"}, 0.1});
     cases.push_back({"04_no_ibl", "04_ibl_irradiance", {"--no-ibl", "--size", "480x270"}, 0.1});
-    // 09's plain material seen through its metallic view: the metallic factors, 0 to 1 (09's README).
+    // 09's plain material seen through its metallic view: the metallic factors, 0 to 1 (09's
+    // README).
     cases.push_back({"09_view_metallic",
                      "09_light_types",
                      {"--untextured", "--view", "metallic", "--size", "480x270"},

@@ -99,5 +99,32 @@ TEST(Views, EachSampleTakesTheOtherTextsWords) {
     EXPECT_NE(usage(kGltfViews).find("; albedo is base-color, ao is occlusion"), std::string::npos);
 }
 
+// Every view of every sample says what it shows: a caption that starts with its name and ends
+// with its encoding, a scale bar where the values are mapped; the picture itself has none.
+TEST(Views, EveryViewHasACaption) {
+    EXPECT_EQ(viewCaption(View::Final), "");
+    for (const std::span<const View> views :
+         {std::span<const View>(kDirectLightViews), std::span<const View>(kLightTypeViews),
+          std::span<const View>(kIrradianceViews), std::span<const View>(kSplitSumViews),
+          std::span<const View>(kGltfViews)}) {
+        for (const View view : views) {
+            if (view == View::Final) continue;
+            const std::string caption = viewCaption(view);
+            EXPECT_EQ(caption.rfind(std::string(viewName(view)) + ": ", 0), 0u) << caption;
+            const ViewScale scale = viewScale(view);
+            if (scale == ViewScale::Compressed) {
+                EXPECT_TRUE(caption.ends_with("; x / (1 + x)")) << caption;
+            }
+            if (scale == ViewScale::AsItIs) {
+                EXPECT_TRUE(caption.ends_with("; as it is")) << caption;
+            }
+        }
+    }
+    EXPECT_EQ(
+        viewCaption(View::D),
+        "d: the GGX distribution D, summed over the lights that reach the point; x / (1 + x)");
+    EXPECT_EQ(viewScale(View::Normal), ViewScale::None);
+}
+
 }  // namespace
 }  // namespace pbr
