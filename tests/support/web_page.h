@@ -23,6 +23,7 @@ struct PageRun {
     std::string hint;               // the header's line on the mouse and keys
     std::string command;            // the bar's command line under a shown picture
     std::string frame;              // the bar's frame time ("143 ms a frame")
+    std::string caption;            // a view's caption over a shown picture
 };
 
 // Why the web tests cannot run on this machine (no browser, no web build), or nullopt.

@@ -3,7 +3,8 @@
 // every file the run wrote, its log (page.log), its exit code (exit.txt), the page's query
 // string at the end (address.txt: the page's controls keep it current), every text its
 // header showed, one a line (said.txt), its line on the mouse and keys (hint.txt), the bar's
-// command line and frame time under a shown picture (command.txt, frame.txt), and, when the address asks for one with shot=N after '#'
+// command line and frame time under a shown picture (command.txt, frame.txt), a view's caption
+// (caption.txt), and, when the address asks for one with shot=N after '#'
 // (web/shell.html), the canvas as the browser showed frame N for a person to see, cut from a
 // screenshot of the page (canvas-screenshot.png): not the program's own read-back, so what WebGL
 // does to a picture on its way to the screen is in it. The browser is driven over the DevTools protocol on a
@@ -41,7 +42,8 @@ const collect = `(function () {
                          said: (status && status.getAttribute("data-said")) || "",
                          hint: (document.getElementById("pbr-hint") || {}).textContent || "",
                          command: (document.getElementById("pbr-command") || {}).textContent || "",
-                         frame: (document.getElementById("pbr-frame") || {}).textContent || "" });
+                         frame: (document.getElementById("pbr-frame") || {}).textContent || "",
+                         caption: (document.getElementById("pbr-caption") || {}).textContent || "" });
 })()`;
 
 // The canvas's place in the page, once the page holds a frame for its screenshot (null before).
@@ -88,6 +90,7 @@ function finish(code, why) {
       writeWhole(path.join(dir, "hint.txt"), page.hint);
       writeWhole(path.join(dir, "command.txt"), page.command);
       writeWhole(path.join(dir, "frame.txt"), page.frame);
+      writeWhole(path.join(dir, "caption.txt"), page.caption);
       clearTimeout(timer);
       finish(0);
     }

@@ -207,7 +207,7 @@ INSTANTIATE_TEST_SUITE_P(Pages, WebTermView,
 // A page draws the same bytes every time, the IBL maps it computes included: 06 given the
 // environment (--hdr) computes its cube, mip chain, irradiance and prefiltered maps in the page
 // (none of them baked there), and writes them, with its picture, as files.
-// A shown page carries what the window's panel does, in a bar under the picture: the frame time,
+// A shown page carries what the window's panel does: a bar under the picture with the frame time,
 // pause (or run) and step, and the command line of the view. 03 spins its objects with time:
 // pause pressed after the first frame stops it, and the command line says at what time.
 TEST(Web, ThePageCarriesTheFrameTimePauseAndCommandLine) {
@@ -225,6 +225,14 @@ TEST(Web, ThePageCarriesTheFrameTimePauseAndCommandLine) {
         runPage(sample, {"--frames", "2", "--output", "bar.png"}, dir / "running");
     ASSERT_EQ(running.exitCode, std::optional<int>(0)) << running.log;
     EXPECT_EQ(running.command.find("--time"), std::string::npos) << running.command;
+    EXPECT_EQ(running.caption, "") << "03 has no views";
+    // a view's caption over the picture, as in a window
+    const PageRun view =
+        runPage("01_lighting", {"--frames", "1", "--output", "d.png", "--view", "d"}, dir / "view");
+    ASSERT_EQ(view.exitCode, std::optional<int>(0)) << view.log;
+    EXPECT_EQ(
+        view.caption,
+        "d: the GGX distribution D, summed over the lights that reach the point; x / (1 + x)");
 }
 
 TEST(Web, TwoRunsGiveTheSameBytes) {
