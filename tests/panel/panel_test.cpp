@@ -175,6 +175,16 @@ TEST(Panel, AStepperStepsTheFlag) {
     std::printf("after two clicks: %s\n", changed.command.c_str());
     EXPECT_EQ(valueIn(changed.command, "--lights"), "2") << changed.command;
     expectFrameIsTheCommands(changed, dir);
+    // 04 reads it every frame too (it once looped over all four lights while --lights said 2)
+    const auto controls04 = layoutOf("04_ibl_irradiance", dir);
+    ASSERT_TRUE(controls04.count("--lights -")) << "no stepper for 04's --lights";
+    const std::string minus04 = controls04.at("--lights -").at(0.5);
+    const PanelRun lowered = runScripted(
+        "04_ibl_irradiance",
+        {"-", hover(minus04), hold(minus04), hover(minus04), hold(minus04), hover(minus04)}, dir,
+        "stepped_04");
+    EXPECT_EQ(valueIn(lowered.command, "--lights"), "2") << lowered.command;
+    expectFrameIsTheCommands(lowered, dir);
     // Down to the flag's least, 0 (no light: the ambient term alone), where "-" stops.
     std::vector<std::string> down = {"-"};
     for (int i = 0; i < 5; ++i) down.insert(down.end(), {hover(minus), hold(minus)});
