@@ -628,9 +628,12 @@ void App::endFrame() {
     }
     // A view's caption: in a window and a page always, in the picture with --caption (or
     // --panel).
-    const std::string caption = currentView() ? viewCaption(*currentView()) : std::string();
+    const bool hasGain = std::any_of(config_.flags.begin(), config_.flags.end(),
+                                     [](const FlagSpec& spec) { return spec.name == "--gain"; });
+    const float gain = hasGain ? flagNumber("--gain") : 1.0f;
+    const std::string caption = currentView() ? viewCaption(*currentView(), gain) : std::string();
     if (panel_ && !caption.empty() && (context_->windowed() || options_.panel || options_.caption))
-        panel_->caption(caption, viewScale(*currentView()));
+        panel_->caption(caption, viewScale(*currentView()), gain);
 #ifdef PBR_WEBGL
     if (context_->windowed()) web::showCaption(caption);
 #endif

@@ -27,7 +27,7 @@ std::vector<std::string> Panel::begin(const PanelInput&, glm::ivec2,
     return {};
 }
 void Panel::label(glm::vec2, const std::string&) {}
-void Panel::caption(const std::string&, ViewScale) {}
+void Panel::caption(const std::string&, ViewScale, float) {}
 void Panel::end() {}
 bool Panel::wantsMouse() const {
     return false;
@@ -269,7 +269,7 @@ void Panel::label(glm::vec2 pixel, const std::string& text) {
     list->AddText(at, IM_COL32(235, 235, 235, 255), text.c_str());
 }
 
-void Panel::caption(const std::string& text, ViewScale scale) {
+void Panel::caption(const std::string& text, ViewScale scale, float gain) {
     ImGui::SetCurrentContext(state_->context);
     ImDrawList* list = ImGui::GetBackgroundDrawList();  // under the panel, over the picture
     const ImVec2 display = ImGui::GetIO().DisplaySize;
@@ -292,13 +292,18 @@ void Panel::caption(const std::string& text, ViewScale scale) {
     list->AddRectFilledMultiColor(bar, ImVec2(bar.x + barWidth, bar.y + 8.0f),
                                   IM_COL32(0, 0, 0, 255), IM_COL32(255, 255, 255, 255),
                                   IM_COL32(255, 255, 255, 255), IM_COL32(0, 0, 0, 255));
-    const auto tick = [&](float level, const char* value) {
+    const auto tick = [&](float level, std::string value) {
+        if (value != "0" && scale == ViewScale::Compressed && gain != 1.0f) {
+            char text[16];  // x of x / (1 + x) before the gain
+            std::snprintf(text, sizeof text, "%.3g", std::strtod(value.c_str(), nullptr) / gain);
+            value = text;
+        }
         const float x = std::round(bar.x + level * barWidth);
         list->AddLine(ImVec2(x, bar.y + 8.0f), ImVec2(x, bar.y + 11.0f),
                       IM_COL32(235, 235, 235, 255));
-        const float w = ImGui::CalcTextSize(value).x;
+        const float w = ImGui::CalcTextSize(value.c_str()).x;
         list->AddText(ImVec2(std::clamp(x - 0.5f * w, bar.x, bar.x + barWidth - w), bar.y + 11.0f),
-                      IM_COL32(235, 235, 235, 255), value);
+                      IM_COL32(235, 235, 235, 255), value.c_str());
     };
     if (scale == ViewScale::AsItIs) {
         tick(0.0f, "0");

@@ -67,8 +67,8 @@ public:
     void label(glm::vec2 pixel, const std::string& text);
     // A view's caption at the picture's top left (viewCaption), with a scale bar under it:
     // grey levels 0 to 255 across, ticked where a value as it is (0, 0.5, 1), or x of
-    // x / (1 + x) (0, 0.25, 1, 4), lands.
-    void caption(const std::string& text, ViewScale scale);
+    // x / (1 + x) (0, 0.25, 1, 4, each divided by `gain`: --gain), lands.
+    void caption(const std::string& text, ViewScale scale, float gain = 1.0f);
     // Ends the frame's layer: what draw() draws.
     void end();
     // The cursor is over the panel, or one of its controls holds the mouse (a slider dragged

@@ -171,8 +171,28 @@ std::vector<std::string> viewDefines(View view) {
     return {"TERM_VIEWS"};
 }
 
-void selectView(Shader& shader, View view) {
-    if (view != View::Final) shader.set("termView", int(view));
+FlagSpec viewGainFlag() {
+    return FlagSpec::number("--gain", "G",
+                            "multiply a view's values by G before x / (1 + x), to read a dark "
+                            "term (default 1)",
+                            0.01, 1000.0, 1.0)
+        .asLive();
+}
+
+void selectView(Shader& shader, View view, float gain) {
+    if (view == View::Final) return;
+    shader.set("termView", int(view));
+    shader.set("viewGain", gain);
+}
+
+std::string viewCaption(View view, float gain) {
+    std::string caption = viewCaption(view);
+    if (gain != 1.0f && viewScale(view) == ViewScale::Compressed) {
+        caption.replace(caption.size() - std::string_view(kCompressed).size(),
+                        std::string_view(kCompressed).size(),
+                        "x / (1 + x) of " + flagNumberText(gain) + " x");
+    }
+    return caption;
 }
 
 }  // namespace pbr

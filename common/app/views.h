@@ -151,7 +151,12 @@ std::vector<View> allViews();
 View viewNamed(std::string_view name);
 // What the sample's shaders are built with: nothing for the picture, TERM_VIEWS for a view.
 std::vector<std::string> viewDefines(View view);
-// Sets `termView` for a view (nothing for the picture, whose program has no such uniform).
-void selectView(Shader& shader, View view);
+// --gain G, read every frame: a view's values shown through x / (1 + x) are multiplied by G first
+// (1, the default: as they are), so that a dark term can be read; its caption says so.
+FlagSpec viewGainFlag();
+// Sets `termView` and `viewGain` for a view (nothing for the picture, whose program has neither).
+void selectView(Shader& shader, View view, float gain = 1.0f);
+// The caption with its gain said ("...; x / (1 + x) of 4 x", for a gain of 4).
+std::string viewCaption(View view, float gain);
 
 }  // namespace pbr

@@ -84,7 +84,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
                                       "alone in a view (0: all of them)",
                                       0, GltfRenderer::kMaxLights, 0)
                         .asLive());
-    flags.push_back(viewFlag(kGltfViews).asLive());
+    flags.insert(flags.end(), {viewFlag(kGltfViews).asLive(), viewGainFlag()});
     flags.push_back(FlagSpec::toggle("--single-scattering",
                                      "image-based light without the multiple-scattering energy "
                                      "(rough metals darken, as in 05)")
@@ -152,7 +152,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         shader.set("multipleScattering", app.options().has("--single-scattering") ? 0 : 1);
         shader.set("toneMapper", toneMapper);
         shader.set("exposure", exposure);
-        selectView(shader, view);
+        selectView(shader, view, app.flagNumber("--gain"));
         if (ibl) {
             maps->use(shader, GltfRenderer::kFirstIblUnit);
             // the sky first here: blended primitives must be drawn over it

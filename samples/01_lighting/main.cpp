@@ -33,7 +33,7 @@ int main(int argc, char** argv) try {
          pbr::FlagSpec::number("--metallic-offset", "D",
                                "add D (-1 to 1) to every sphere's metallic", -1.0, 1.0, 0.0)
              .asLive(),
-         pbr::viewFlag(pbr::kDirectLightViews).asLive()});
+         pbr::viewFlag(pbr::kDirectLightViews).asLive(), pbr::viewGainFlag()});
     pbr::App app(argc, argv,
                  {.name = "01_lighting",
                   .title = "01 lighting: Cook-Torrance, 4 point lights",
@@ -61,7 +61,7 @@ int main(int argc, char** argv) try {
         // The material (one albedo, ao 1) and the lights.
         shader.set("albedo", app.flagVec3("--albedo"));
         shader.set("ao", 1.0f);
-        pbr::selectView(shader, view);
+        pbr::selectView(shader, view, app.flagNumber("--gain"));
         const std::span<const glm::vec3> lights = pbr::gridLights(app);
         pbr::setPointLights(shader, lights, app.flagVec3("--light-color"));
 

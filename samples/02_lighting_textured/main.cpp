@@ -39,17 +39,23 @@ int main(int argc, char** argv) try {
                               "which of the project's material sets (default rusted_iron; "
                               "--material-dir wins)")
             .asLive(),
-        pbr::FlagSpec::choice(
-            "--tangent-frame", {"mesh", "derivatives"},
-            "tangents from the sphere (default) or from screen-space derivatives")
+        pbr::FlagSpec::choice("--tangent-frame", {"mesh", "derivatives"},
+                              "tangents from the sphere (default) or from screen-space derivatives")
             .asLive(),
         pbr::FlagSpec::choice("--filter", {"trilinear", "nearest"},
                               "texture filtering (default trilinear)"),
-        pbr::viewFlag(pbr::kDirectLightViews).asLive()};
-    flags.push_back(pbr::FlagSpec::toggle("--no-albedo-map", "mid grey instead of the albedo map").asLive());
-    flags.push_back(pbr::FlagSpec::toggle("--no-normal-map", "the mesh's own normal instead of the normal map").asLive());
-    flags.push_back(pbr::FlagSpec::toggle("--no-metallic-map", "metallic 0 instead of the metallic map").asLive());
-    flags.push_back(pbr::FlagSpec::toggle("--no-roughness-map", "roughness 0.5 instead of the roughness map").asLive());
+        pbr::viewFlag(pbr::kDirectLightViews).asLive(), pbr::viewGainFlag()};
+    flags.push_back(
+        pbr::FlagSpec::toggle("--no-albedo-map", "mid grey instead of the albedo map").asLive());
+    flags.push_back(
+        pbr::FlagSpec::toggle("--no-normal-map", "the mesh's own normal instead of the normal map")
+            .asLive());
+    flags.push_back(
+        pbr::FlagSpec::toggle("--no-metallic-map", "metallic 0 instead of the metallic map")
+            .asLive());
+    flags.push_back(
+        pbr::FlagSpec::toggle("--no-roughness-map", "roughness 0.5 instead of the roughness map")
+            .asLive());
     flags.push_back(pbr::FlagSpec::toggle("--no-ao-map", "ao 1 instead of the ao map").asLive());
     pbr::App app(argc, argv,
                  {.name = "02_lighting_textured",
@@ -66,7 +72,8 @@ int main(int argc, char** argv) try {
     // each read the first time it is shown.
     std::map<std::string, pbr::PbrTextures> materials;
     const auto materialFolder = [&] {
-        return app.flag("--material-dir").value_or((pbr::materialDir() / app.flagChoice("--material")).string());
+        return app.flag("--material-dir")
+            .value_or((pbr::materialDir() / app.flagChoice("--material")).string());
     };
     materials.emplace(materialFolder(), pbr::loadPbrTextures(materialFolder(), filter));
 
@@ -103,8 +110,8 @@ int main(int argc, char** argv) try {
         shader.set("aoMap", 4);
         shader.set("useDerivativeTangents",
                    app.flagChoice("--tangent-frame") == "derivatives" ? 1 : 0);
-        pbr::selectView(shader, view);
-        pbr::setPointLights(shader, std::span(&lightPosition, 1), glm::vec3(150.0f, 150.0f, 150.0f));
+        pbr::selectView(shader, view, app.flagNumber("--gain"));
+        pbr::setPointLights(shader, std::span(&lightPosition, 1), glm::vec3(150.0f));
         material.bind();
 
         const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing

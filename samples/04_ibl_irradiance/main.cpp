@@ -17,7 +17,7 @@ int main(int argc, char** argv) try {
     std::vector<pbr::FlagSpec> flags = pbr::iblFlags();
     // The parts of the light, and what is seen: read every frame (live in the window's panel).
     for (const pbr::FlagSpec& flag : pbr::iblGridFlags(false)) flags.push_back(flag);
-    flags.push_back(pbr::viewFlag(pbr::kIrradianceViews).asLive());
+    flags.insert(flags.end(), {pbr::viewFlag(pbr::kIrradianceViews).asLive(), pbr::viewGainFlag()});
     pbr::App app(argc, argv,
                  {.name = "04_ibl_irradiance",
                   .title = "04 IBL: diffuse irradiance",
@@ -62,7 +62,7 @@ int main(int argc, char** argv) try {
         shader.set("ao", 1.0f);
         shader.set("irradianceMap", 0);
         shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
-        pbr::selectView(shader, view);
+        pbr::selectView(shader, view, app.flagNumber("--gain"));
         pbr::setPointLights(shader, pbr::gridLights(app), glm::vec3(300.0f));
         irradianceMap->bind(0);
         const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing

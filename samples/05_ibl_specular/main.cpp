@@ -26,7 +26,7 @@ int main(int argc, char** argv) try {
     // The ambient term's form (--split-sum), the parts of the light, and what is seen: read every
     // frame (live in the window's panel).
     for (const pbr::FlagSpec& flag : pbr::iblGridFlags(true)) flags.push_back(flag);
-    flags.push_back(pbr::viewFlag(pbr::kSplitSumViews).asLive());
+    flags.insert(flags.end(), {pbr::viewFlag(pbr::kSplitSumViews).asLive(), pbr::viewGainFlag()});
     pbr::App app(argc, argv,
                  {.name = "05_ibl_specular",
                   .title = "05 IBL: specular",
@@ -79,7 +79,7 @@ int main(int argc, char** argv) try {
         maps->use(shader, 5);
         shader.set("exactSplitSum", app.flagChoice("--split-sum") == "exact" ? 1 : 0);
         shader.set("noIbl", app.options().has("--no-ibl") ? 1 : 0);
-        pbr::selectView(shader, view);
+        pbr::selectView(shader, view, app.flagNumber("--gain"));
         pbr::setPointLights(shader, pbr::gridLights(app), glm::vec3(300.0f));
         const pbr::Frustum frustum = app.frustum();  // a sphere wholly out of view draws nothing
         // In a window (and with --panel) each set's name under it, or the grid's axes.

@@ -69,7 +69,7 @@ int main(int argc, char** argv) try {
         pbr::PbrTextures::setSamplers(shader);
         shader.set("useDerivativeTangents", 0);
         shader.set("untextured", untextured ? 1 : 0);
-        pbr::selectView(shader, view);
+        pbr::selectView(shader, view, app.flagNumber("--gain"));
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());

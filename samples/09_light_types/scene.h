@@ -141,7 +141,8 @@ inline std::vector<pbr::FlagSpec> flags() {
                               "a plain material instead of the maps: the tint as albedo, "
                               "a rough dielectric floor, spheres of roughness 0.4 and "
                               "metallic 0 to 1 from left to right (the tests' surface)"),
-        pbr::viewFlag(pbr::kLightTypeViews).asLive()};
+        pbr::viewFlag(pbr::kLightTypeViews).asLive(),
+        pbr::viewGainFlag()};
 }
 
 }  // namespace light_types

@@ -78,8 +78,11 @@ void addDirectTerms(inout DirectSums sums, vec3 N, vec3 V, vec3 L, vec3 albedo, 
 }
 
 // An unbounded value shown in [0, 1): x / (1 + x).
+uniform float viewGain;  // --gain: multiplies what is compressed (1: as it is)
+
 vec3 viewCompress(vec3 x)
 {
+    x *= viewGain;
     return x / (1.0 + x);
 }
 

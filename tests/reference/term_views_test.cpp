@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "app/views.h"
 #include "files/image.h"
 #include "math/brdf.h"
 #include "reference/grid_scene.h"
@@ -38,6 +39,7 @@ struct GridLighting {
     enum class Ibl { None, Irradiance, SplitSum } ibl = Ibl::None;
     bool iblOn = true;
     bool exactSplitSum = false;
+    double gain = 1.0;  // --gain: x / (1 + x) of gain x, for the views shown so
 };
 
 // A view of a grid sample at surface point `s`, each by its definition in the samples' READMEs:
@@ -139,8 +141,14 @@ void compareViews(const std::string& sample, const std::vector<std::string>& vie
                 if (!hit || hit->ndotv < 0.5) return std::nullopt;
                 const auto surface = surfaceAt(*hit, row, col);
                 if (!surface) return std::nullopt;
-                return 255.0 *
-                       gridView(view, *surface, glm::vec3(gridCamera(gridZ)), lighting, skyReads);
+                glm::dvec3 shown =
+                    gridView(view, *surface, glm::vec3(gridCamera(gridZ)), lighting, skyReads);
+                if (lighting.gain != 1.0 && viewScale(viewNamed(view)) == ViewScale::Compressed) {
+                    // y = x / (1 + x) gives x = y / (1 - y); the gain makes it g x / (1 + g x)
+                    const glm::dvec3 x = shown / (1.0 - shown);
+                    shown = lighting.gain * x / (1.0 + lighting.gain * x);
+                }
+                return 255.0 * shown;
             });
         std::printf("%s --view %s: compared %d pixels (skipped %d); worst channel diff %.0f/255\n",
                     sample.c_str(), view.c_str(), result.checked, result.skipped, result.worst);
@@ -156,6 +164,9 @@ TEST(Reference, Lighting01TermViewsMatchTheCpu) {
     std::vector<std::string> views = kInputAndDirectViews;
     views.push_back("ambient");
     compareViews("01_lighting", views, {}, {}, 0.0, testOutputDir("reference_01_views"));
+    // a gain for the dark terms (--gain 8: x / (1 + x) of 8 x); the inputs keep theirs
+    compareViews("01_lighting", {"specular", "diffuse", "ndotl", "albedo"}, {"--gain", "8"},
+                 {.gain = 8.0}, 0.0, testOutputDir("reference_01_views_gain"));
     // one light alone (--light K): the third, up and to the left of the grid's right half
     compareViews("01_lighting", {"d", "f", "specular", "ndotl", "direct"}, {"--light", "3"},
                  {.lights = std::span(kGridLights).subspan(2, 1)}, 0.0,
