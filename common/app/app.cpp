@@ -15,6 +15,7 @@
 #include "base/paths.h"
 #include "context/web.h"
 #include "files/image.h"
+#include "gl/mesh.h"
 
 namespace pbr {
 
@@ -229,6 +230,7 @@ void App::useOrbitCamera(const glm::vec3& boundsMin, const glm::vec3& boundsMax,
 App::~App() {
     panel_.reset();
     shaders_.clear();
+    groundQuad_.reset();
     target_.reset();
     // Everything a sample made was declared after the App and is gone by now: whatever GL still
     // knows of is a leak. (Skipped while unwinding from an error: that run already failed.)
@@ -307,6 +309,27 @@ Shader& App::shader(const std::string& vertex, const std::string& fragment,
     Shader& made = shaders_.emplace_back(vertex, fragment, std::move(defines));
     shaderKeys_.push_back(std::move(key));
     return made;
+}
+
+void App::clearFrame(View view, const glm::vec3& pictureColor) {
+    glClearColor(pictureColor.r, pictureColor.g, pictureColor.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (view == View::Final) return;
+    const SavedGlState saved;
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    Shader& ground = shader("ibl/fullscreen.vert", "common/view_ground.frag");
+    // levels 56 and 72 in the picture: an sRGB target encodes what it is given
+    const auto level = [&](float byte) {
+        const float v = byte / 255.0f;
+        return glm::vec3(config_.srgbTarget ? std::pow((v + 0.055f) / 1.055f, 2.4f) : v);
+    };
+    ground.use();
+    ground.set("dark", level(56.0f));
+    ground.set("light", level(72.0f));
+    if (!groundQuad_) groundQuad_ = std::make_unique<GpuMesh>(quad());
+    groundQuad_->draw();
 }
 
 void App::label(const glm::vec2& pixel, const std::string& text) {

@@ -51,6 +51,8 @@ struct AppConfig {
     bool fixedView = false;
 };
 
+class GpuMesh;
+
 class App {
 public:
     App(int argc, char** argv, AppConfig config);
@@ -113,6 +115,11 @@ public:
     // defines (a sample that picks its program every frame, by a live flag), it is the same one.
     Shader& shader(const std::string& vertex, const std::string& fragment,
                    std::vector<std::string> defines = {});
+    // Clears the frame to draw `view` on: the picture on `pictureColor` (what its sky or
+    // background leaves), a term view on a neutral checker of two greys, levels 56 and 72 (16
+    // pixels a cell), not on the sky or the tone-mapped scene, so that pale terms (g, NdotL, the
+    // irradiance) and dark ones both stand out and no flat value melts into it.
+    void clearFrame(View view, const glm::vec3& pictureColor);
 
     // A label over the picture, drawn by the panel's layer (in a window; headless with --panel
     // only): at a pixel from the top-left, or at a point of the scene, centred there. Call it
@@ -132,7 +139,7 @@ public:
     int width() const { return target_->width(); }
     int height() const { return target_->height(); }
     float aspect() const { return float(width()) / float(height()); }
-    float time() const { return time_; }            // seconds; fixed when headless
+    float time() const { return time_; }  // seconds; fixed when headless
     // The mouse over the picture this frame, in pixels from the top-left (a window's, or a
     // panel script's), when it is over the picture and not over the panel.
     std::optional<glm::vec2> cursor() const { return cursor_; }
@@ -171,6 +178,7 @@ private:
     std::string usage_;
     std::unique_ptr<Context> context_;  // first member: destroyed last
     std::unique_ptr<RenderTarget> target_;
+    std::unique_ptr<GpuMesh> groundQuad_;  // clearFrame's, made at its first view
     std::deque<Shader> shaders_;
     std::vector<std::string> shaderKeys_;  // shaders_[i]'s files and defines
     std::unique_ptr<Panel> panel_;  // made when the build has Dear ImGui and a panel is wanted
@@ -197,7 +205,7 @@ private:
     double lastSeconds_ = 0.0;
     double startSeconds_ = 0.0;  // context clock when the context was made: scene time 0
     std::chrono::steady_clock::time_point constructed_ = std::chrono::steady_clock::now();
-    double startupSeconds_ = 0.0;  // App constructed (context creation included) -> first frame
+    double startupSeconds_ = 0.0;     // App constructed (context creation included) -> first frame
     double lastFrameEnd_ = 0.0;       // --benchmark: context clock when the last frame ended
     double firstFrameSeconds_ = 0.0;  // --benchmark: process start -> first frame finished
     double precomputeSeconds_ = 0.0;

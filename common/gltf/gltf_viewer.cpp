@@ -140,9 +140,9 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
             app.bindRenderTarget();  // the frame's, after the precomputation's own
         }
 
-        // Without the environment, a dark grey background (linear; the target encodes it).
-        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        // Without the environment, a dark grey background (linear; the target encodes it); a view
+        // on its neutral grey, without the sky.
+        app.clearFrame(view, glm::vec3(0.02f));
         shader.use();
         shader.set("projection", app.projection());
         shader.set("view", app.view());
@@ -157,7 +157,8 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
             maps->use(shader, GltfRenderer::kFirstIblUnit);
             // the sky first here: blended primitives must be drawn over it
             skybox.setToneMapping(toneMapper, exposure);
-            skybox.draw(maps->environment.environmentMap(), app.view(), app.projection());
+            if (view == View::Final)
+                skybox.draw(maps->environment.environmentMap(), app.view(), app.projection());
         }
         renderer->draw(gpuModel, glm::mat4(1.0f), app.view());
         if (!app.flag("--model")) {

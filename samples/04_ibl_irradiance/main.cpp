@@ -51,8 +51,7 @@ int main(int argc, char** argv) try {
         pbr::Shader& shader =
             app.shader("common/pbr.vert", "04_ibl_irradiance/pbr.frag", pbr::viewDefines(view));
 
-        glClearColor(0.2f, 0.3f, 0.3f, 1.0f);  // hidden by the skybox wherever it is drawn
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        app.clearFrame(view, {0.2f, 0.3f, 0.3f});  // the picture's: hidden by its sky
 
         shader.use();
         shader.set("projection", app.projection());
@@ -79,9 +78,11 @@ int main(int argc, char** argv) try {
 
         pbr::labelSphereGrid(app, grid);  // the axes, in a window (and with --panel)
 
-        // Last: only where nothing is.
+        // Last, the picture's sky: only where nothing is (a view stays on its grey).
         const bool irradianceSky = app.flagChoice("--background") == "irradiance";
-        skybox.draw(irradianceSky ? *irradianceMap : environmentMap, app.view(), app.projection());
+        if (view == pbr::View::Final)
+            skybox.draw(irradianceSky ? *irradianceMap : environmentMap, app.view(),
+                        app.projection());
     }
     return 0;
 } catch (...) {

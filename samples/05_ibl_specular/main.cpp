@@ -62,8 +62,7 @@ int main(int argc, char** argv) try {
                        textured ? "05_ibl_specular/pbr_textured.frag" : "05_ibl_specular/pbr.frag",
                        pbr::viewDefines(view));
 
-        glClearColor(0.2f, 0.3f, 0.3f, 1.0f);  // hidden by the skybox wherever it is drawn
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        app.clearFrame(view, {0.2f, 0.3f, 0.3f});  // the picture's: hidden by its sky
 
         shader.use();
         shader.set("projection", app.projection());
@@ -105,13 +104,14 @@ int main(int argc, char** argv) try {
             }
             pbr::labelSphereGrid(app, grid);
         }
-        // Last: only where nothing is.
+        // Last, the picture's sky: only where nothing is (a view stays on its grey).
         const std::string background = app.flagChoice("--background");
         const pbr::TextureCube& sky = background == "irradiance" ? maps->irradiance
                                       : background == "prefiltered"
                                           ? maps->prefiltered
                                           : maps->environment.environmentMap();
-        skybox.draw(sky, app.view(), app.projection(), app.flagNumber("--background-lod"));
+        if (view == pbr::View::Final)
+            skybox.draw(sky, app.view(), app.projection(), app.flagNumber("--background-lod"));
     }
     return 0;
 } catch (...) {
