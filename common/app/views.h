@@ -61,73 +61,38 @@ enum class View {
     MultipleScattering = 29,
 };
 
+// The views of each sample, in the order --help lists them.
+// clang-format off
 // 07's and 08's: the glTF material's inputs, the punctual lights' terms, the split sum's.
-inline constexpr View kGltfViews[] = {View::Final,
-                                      View::BaseColor,
-                                      View::Normal,
-                                      View::Metallic,
-                                      View::Roughness,
-                                      View::Occlusion,
-                                      View::Emissive,
-                                      View::F0,
-                                      View::D,
-                                      View::G,
-                                      View::F,
-                                      View::Specular,
-                                      View::Diffuse,
-                                      View::NdotL,
-                                      View::Direct,
-                                      View::Irradiance,
-                                      View::Prefiltered,
-                                      View::Lut,
-                                      View::AmbientDiffuse,
-                                      View::AmbientSpecular,
-                                      View::Ambient,
-                                      View::Visibility,
-                                      View::MultipleScattering};
-// Every view the direct-light samples have (01, 02), in the order --help lists them: the text's
-// constant ambient term among them.
+inline constexpr View kGltfViews[] = {
+    View::Final, View::BaseColor, View::Normal, View::Metallic, View::Roughness, View::Occlusion,
+    View::Emissive, View::F0, View::D, View::G, View::F, View::Specular, View::Diffuse,
+    View::NdotL, View::Direct, View::Irradiance, View::Prefiltered, View::Lut,
+    View::AmbientDiffuse, View::AmbientSpecular, View::Ambient, View::Visibility,
+    View::MultipleScattering};
+// The direct-light samples' (01, 02): the text's constant ambient term among them.
 inline constexpr View kDirectLightViews[] = {
-    View::Final,    View::Albedo,  View::Normal, View::Metallic, View::Roughness,
-    View::Ao,       View::F0,      View::D,      View::G,        View::F,
-    View::Specular, View::Diffuse, View::NdotL,  View::Direct,   View::Ambient};
+    View::Final, View::Albedo, View::Normal, View::Metallic, View::Roughness, View::Ao, View::F0,
+    View::D, View::G, View::F, View::Specular, View::Diffuse, View::NdotL, View::Direct,
+    View::Ambient};
 // 09's: those, its ambient volumes' light alone, and its lesson's two factors (--only picks the
 // light types).
 inline constexpr View kLightTypeViews[] = {
-    View::Final, View::Albedo, View::Normal,  View::Metallic,    View::Roughness, View::Ao,
-    View::F0,    View::D,      View::G,       View::F,           View::Specular,  View::Diffuse,
-    View::NdotL, View::Direct, View::Ambient, View::Attenuation, View::Cone};
-// 04's: the direct-light views and its image-based light, the irradiance alone.
+    View::Final, View::Albedo, View::Normal, View::Metallic, View::Roughness, View::Ao, View::F0,
+    View::D, View::G, View::F, View::Specular, View::Diffuse, View::NdotL, View::Direct,
+    View::Ambient, View::Attenuation, View::Cone};
+// 04's: the direct-light views and its image-based light, the irradiance alone, and the weights.
 inline constexpr View kIrradianceViews[] = {
-    View::Final,     View::Albedo, View::Normal,     View::Metallic,
-    View::Roughness, View::Ao,     View::F0,         View::D,
-    View::G,         View::F,      View::Specular,   View::Diffuse,
-    View::NdotL,     View::Direct, View::Irradiance, View::AmbientDiffuse,
-    View::Ambient,   View::Ks,     View::Kd};
-// 05's: the direct-light views and every read and term of the split sum.
-inline constexpr View kSplitSumViews[] = {View::Final,
-                                          View::Albedo,
-                                          View::Normal,
-                                          View::Metallic,
-                                          View::Roughness,
-                                          View::Ao,
-                                          View::F0,
-                                          View::D,
-                                          View::G,
-                                          View::F,
-                                          View::Specular,
-                                          View::Diffuse,
-                                          View::NdotL,
-                                          View::Direct,
-                                          View::Irradiance,
-                                          View::Prefiltered,
-                                          View::Lut,
-                                          View::AmbientDiffuse,
-                                          View::AmbientSpecular,
-                                          View::Ambient,
-                                          View::Ks,
-                                          View::Kd,
-                                          View::FScaleBias};
+    View::Final, View::Albedo, View::Normal, View::Metallic, View::Roughness, View::Ao, View::F0,
+    View::D, View::G, View::F, View::Specular, View::Diffuse, View::NdotL, View::Direct,
+    View::Irradiance, View::AmbientDiffuse, View::Ambient, View::Ks, View::Kd};
+// 05's: the direct-light views and every read, term and weight of the split sum.
+inline constexpr View kSplitSumViews[] = {
+    View::Final, View::Albedo, View::Normal, View::Metallic, View::Roughness, View::Ao, View::F0,
+    View::D, View::G, View::F, View::Specular, View::Diffuse, View::NdotL, View::Direct,
+    View::Irradiance, View::Prefiltered, View::Lut, View::AmbientDiffuse, View::AmbientSpecular,
+    View::Ambient, View::Ks, View::Kd, View::FScaleBias};
+// clang-format on
 
 // "final", "albedo", "normal", ..., "d", "g", "f", "specular", "diffuse", "ndotl", "direct",
 // "irradiance", "prefiltered", "lut", "ambient-diffuse", "ambient-specular", "ambient",
