@@ -175,7 +175,19 @@ TEST(Panel, AStepperStepsTheFlag) {
     std::printf("after two clicks: %s\n", changed.command.c_str());
     EXPECT_EQ(valueIn(changed.command, "--lights"), "2") << changed.command;
     expectFrameIsTheCommands(changed, dir);
-    // 04 reads it every frame too (it once looped over all four lights while --lights said 2)
+    // Down to the flag's least, 0 (no light: the ambient term alone), where "-" stops.
+    std::vector<std::string> down = {"-"};
+    for (int i = 0; i < 5; ++i) down.insert(down.end(), {hover(minus), hold(minus)});
+    down.push_back(hover(minus));
+    const PanelRun least = runScripted("01_lighting", down, dir, "least");
+    EXPECT_EQ(valueIn(least.command, "--lights"), "0") << least.command;
+    expectFrameIsTheCommands(least, dir);
+}
+
+// 04 reads --lights every frame too (it once looped over all four lights while --lights said 2):
+// its stepper lowers it live.
+TEST(Panel, A04StepperLowersItsLightsLive) {
+    const fs::path dir = testOutputDir("panel_stepper_04");
     const auto controls04 = layoutOf("04_ibl_irradiance", dir);
     ASSERT_TRUE(controls04.count("--lights -")) << "no stepper for 04's --lights";
     const std::string minus04 = controls04.at("--lights -").at(0.5);
@@ -185,13 +197,6 @@ TEST(Panel, AStepperStepsTheFlag) {
         "stepped_04");
     EXPECT_EQ(valueIn(lowered.command, "--lights"), "2") << lowered.command;
     expectFrameIsTheCommands(lowered, dir);
-    // Down to the flag's least, 0 (no light: the ambient term alone), where "-" stops.
-    std::vector<std::string> down = {"-"};
-    for (int i = 0; i < 5; ++i) down.insert(down.end(), {hover(minus), hold(minus)});
-    down.push_back(hover(minus));
-    const PanelRun least = runScripted("01_lighting", down, dir, "least");
-    EXPECT_EQ(valueIn(least.command, "--lights"), "0") << least.command;
-    expectFrameIsTheCommands(least, dir);
 }
 
 TEST(Panel, AComboBoxChoiceIsTheFlagsWord) {
