@@ -52,7 +52,7 @@ std::string jsonEscape(const std::string& text) {
 }
 
 // PBR_PANEL_SCRIPT (see panel_script.h): the tests drive the panel headless with it.
-std::vector<InputFrame> readPanelScript(const fs::path& path) {
+std::vector<ScriptFrame> readPanelScript(const fs::path& path) {
     std::ifstream in(path);
     if (!in) throw Error(path.string() + ": cannot read the panel script (PBR_PANEL_SCRIPT)");
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -178,7 +178,10 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     // sample's), with --panel, and when a script drives it.
     const char* script = std::getenv("PBR_PANEL_SCRIPT");
     scripted_ = script && *script;
-    if (scripted_) script_ = readPanelScript(script);
+    if (scripted_) {
+        scriptPath_ = script;
+        script_ = readPanelScript(scriptPath_);
+    }
     if (Panel::available() &&
         (context_->windowed() || options_.panel || options_.caption || scripted_)) {
         panel_ = std::make_unique<Panel>(config_.flags, [this](const std::string& text) {
@@ -466,10 +469,21 @@ bool App::nextFrame() {
         // The script's mouse, and what a window would make of it: the move since the last
         // frame (y up), and the part of it made with the button held.
         const auto scriptedAt = [this](int frame) {
-            return frame >= 0 && size_t(frame) < script_.size() ? script_[size_t(frame)]
+            return frame >= 0 && size_t(frame) < script_.size() ? script_[size_t(frame)].input
                                                                 : InputFrame{};
         };
         const InputFrame scripted = scriptedAt(frameIndex_), before = scriptedAt(frameIndex_ - 1);
+        if (size_t(frameIndex_) < script_.size() && !script_[size_t(frameIndex_)].flag.empty()) {
+            // A live flag set as a page's control sets it; a script that names another flag, or
+            // a value the flag refuses, ends the run (the test that wrote it is wrong).
+            const ScriptFrame& line = script_[size_t(frameIndex_)];
+            if (!setLiveFlag(line.flag, line.value)) {
+                throw Error(scriptPath_ + ":" + std::to_string(frameIndex_ + 1) + ": " + line.flag +
+                            (line.value ? " " + printable(*line.value) : std::string()) +
+                            ": not a live flag of " + config_.name + ", or a value it refuses");
+            }
+        }
+        input.screenshot = scripted.screenshot;
         input.cursor = scripted.cursor;
         input.leftButton = scripted.leftButton;
         input.leftPresses = scripted.leftPresses;
@@ -670,7 +684,7 @@ void App::endFrame() {
         target_->bindResolved();
         panel_->draw();
     }
-    if (screenshotCount_ > 0 && context_->windowed()) {
+    if (screenshotCount_ > 0 && (context_->windowed() || scripted_)) {
         writeScreenshot("screenshot-" + config_.name + "-" + std::to_string(frameIndex_) + ".png");
         screenshotCount_ = 0;
     }

@@ -22,6 +22,7 @@
 
 #include "app/options.h"
 #include "app/panel.h"
+#include "app/panel_script.h"
 #include "app/views.h"
 #include "context/context.h"
 #include "gl/framebuffer.h"
@@ -187,7 +188,8 @@ private:
     bool panelHasMouse_ = false;  // this frame's mouse is the panel's, not the camera's
     std::optional<glm::vec2> cursor_;
     bool scripted_ = false;
-    std::vector<InputFrame> script_;  // PBR_PANEL_SCRIPT: the mouse of each frame, headless
+    std::string scriptPath_;
+    std::vector<ScriptFrame> script_;  // PBR_PANEL_SCRIPT: each frame's mouse and flags, headless
     double shownFrameMilliseconds_ = 0.0;
     bool paused_ = false;
     float pausedTime_ = 0.0f;

@@ -8,8 +8,20 @@
 
 namespace pbr {
 
-std::vector<InputFrame> parsePanelScript(std::string_view text, const std::string& name) {
-    std::vector<InputFrame> frames;
+namespace {
+
+// A flag's name as the command line spells it: "--" and lower-case words joined by '-'.
+bool isFlagName(const std::string& word) {
+    if (word.size() < 3 || word.rfind("--", 0) != 0) return false;
+    return std::all_of(word.begin() + 2, word.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-';
+    });
+}
+
+}  // namespace
+
+std::vector<ScriptFrame> parsePanelScript(std::string_view text, const std::string& name) {
+    std::vector<ScriptFrame> frames;
     // Lines as std::getline splits a file: a last line without its '\n' still counts.
     for (size_t at = 0; at < text.size();) {
         const size_t end = std::min(text.find('\n', at), text.size());
@@ -17,17 +29,31 @@ std::vector<InputFrame> parsePanelScript(std::string_view text, const std::strin
         at = end + 1;
         const std::string where =
             name + ":" + std::to_string(frames.size() + 1) + ": '" + printable(line);
-        InputFrame frame;
-        if (line != "-") {
+        ScriptFrame script;
+        InputFrame& frame = script.input;
+        std::istringstream words(line);
+        std::string first, flag, value, rest;
+        words >> first;
+        if (first == "set" || first == "unset") {
+            bool read = bool(words >> flag) && isFlagName(flag);
+            if (read && first == "set") words >> value;  // a switch has none
+            if (!read || (words >> rest)) {
+                throw Error(where + "' is not 'set --flag [value]' or 'unset --flag'");
+            }
+            script.flag = flag;
+            if (first == "set") script.value = value;
+        } else if (line == "F12") {
+            frame.screenshot = true;
+        } else if (line != "-") {
             std::istringstream fields(line);
             int button = 0;
-            std::string rest;
             bool read = bool(fields >> frame.cursor.x >> frame.cursor.y >> button);
             if (read && !(fields >> std::ws).eof()) read = bool(fields >> frame.scroll);
             if (!read || (fields >> rest) || button < 0 || button > 2) {
                 throw Error(where +
                             "' is not 'x y button [scroll]' (button 0 up, 1 held, 2 clicked "
-                            "between frames; scroll steps, up positive) or '-'");
+                            "between frames; scroll steps, up positive), '-', 'set --flag "
+                            "[value]', 'unset --flag' or 'F12'");
             }
             if (!(std::abs(frame.scroll) <= kMaxScriptScroll)) {
                 throw Error(where + "': a scroll of more than 100 steps in a frame");
@@ -40,7 +66,7 @@ std::vector<InputFrame> parsePanelScript(std::string_view text, const std::strin
             frame.leftButton = button == 1;
             frame.leftPresses = button == 2 ? 1 : 0;
         }
-        frames.push_back(frame);
+        frames.push_back(std::move(script));
     }
     return frames;
 }

@@ -174,7 +174,7 @@ std::vector<std::string> viewDefines(View view) {
 FlagSpec viewGainFlag() {
     return FlagSpec::number("--gain", "G",
                             "multiply a view's values by G before x / (1 + x), to read a dark "
-                            "term (default 1)",
+                            "term",
                             0.01, 1000.0, 1.0)
         .asLive();
 }

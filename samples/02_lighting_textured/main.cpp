@@ -16,15 +16,19 @@
 #include "math/sphere_grid.h"
 
 namespace {
-// The project's material sets (--material), and the maps each switch leaves out (the shaders'
-// NO_..._MAP defines, material_maps.glsl).
+// The project's material sets (--material), and the five maps in the order of their texture
+// units: each one's sampler, and the switch that leaves it out (the shaders' NO_..._MAP defines,
+// material_maps.glsl).
 const std::vector<std::string> kMaterialSets = {"rusted_iron", "gold", "grass", "plastic", "wall"};
-constexpr std::array<std::pair<const char*, const char*>, 5> kMapSwitches = {{
-    {"--no-albedo-map", "NO_ALBEDO_MAP"},
-    {"--no-normal-map", "NO_NORMAL_MAP"},
-    {"--no-metallic-map", "NO_METALLIC_MAP"},
-    {"--no-roughness-map", "NO_ROUGHNESS_MAP"},
-    {"--no-ao-map", "NO_AO_MAP"},
+struct MapSwitch {
+    const char *sampler, *flag, *define;
+};
+constexpr std::array<MapSwitch, 5> kMaps = {{
+    {"albedoMap", "--no-albedo-map", "NO_ALBEDO_MAP"},
+    {"normalMap", "--no-normal-map", "NO_NORMAL_MAP"},
+    {"metallicMap", "--no-metallic-map", "NO_METALLIC_MAP"},
+    {"roughnessMap", "--no-roughness-map", "NO_ROUGHNESS_MAP"},
+    {"aoMap", "--no-ao-map", "NO_AO_MAP"},
 }};
 }  // namespace
 
@@ -85,8 +89,8 @@ int main(int argc, char** argv) try {
     while (app.nextFrame()) {
         const pbr::View view = pbr::viewNamed(app.flagChoice("--view"));
         std::vector<std::string> defines = pbr::viewDefines(view);
-        for (const auto& [flag, define] : kMapSwitches) {
-            if (app.options().has(flag)) defines.push_back(define);
+        for (const MapSwitch& map : kMaps) {
+            if (app.options().has(map.flag)) defines.push_back(map.define);
         }
         pbr::Shader& shader =
             app.shader("common/pbr_tangent.vert", "02_lighting_textured/pbr.frag", defines);
@@ -103,11 +107,9 @@ int main(int argc, char** argv) try {
         shader.set("projection", app.projection());
         shader.set("view", app.view());
         shader.set("camPos", app.camera().position());
-        shader.set("albedoMap", 0);
-        shader.set("normalMap", 1);
-        shader.set("metallicMap", 2);
-        shader.set("roughnessMap", 3);
-        shader.set("aoMap", 4);
+        for (size_t unit = 0; unit < kMaps.size(); ++unit) {  // (a map left out has no sampler)
+            if (!app.options().has(kMaps[unit].flag)) shader.set(kMaps[unit].sampler, int(unit));
+        }
         shader.set("useDerivativeTangents",
                    app.flagChoice("--tangent-frame") == "derivatives" ? 1 : 0);
         pbr::selectView(shader, view, app.flagNumber("--gain"));

@@ -1,6 +1,7 @@
 // PBR_PANEL_SCRIPT (app/panel_script.h): any text either gives a frame for each of its lines,
-// the mouse at a finite place within reach of the picture or absent, its scroll finite and bounded, or is refused in one line
-// naming the script and the line.
+// the mouse at a finite place within reach of the picture or absent, its scroll finite and
+// bounded, a flag changed only by its name as the command line spells it, or is refused in one
+// line naming the script and the line.
 #include "app/panel_script.h"
 #include "fuzz_check.h"
 
@@ -8,7 +9,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
     using namespace pbr;
     const std::string name = "fuzz.script";
     const std::string_view text = fuzz::bytesOf(data, size);
-    std::vector<InputFrame> frames;
+    std::vector<ScriptFrame> frames;
     try {
         frames = parsePanelScript(text, name);
     } catch (const Error& e) {
@@ -19,7 +20,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
                       e.what());
     }
     fuzz::expect(frames.size() == fuzz::split(text, '\n').size(), "a frame a line");
-    for (const InputFrame& frame : frames) {
+    for (const ScriptFrame& line : frames) {
+        const InputFrame& frame = line.input;
+        if (!line.flag.empty()) {
+            fuzz::expect(line.flag.size() > 2 && line.flag.rfind("--", 0) == 0 &&
+                             line.flag.find_first_not_of("-abcdefghijklmnopqrstuvwxyz0123456789") ==
+                                 std::string::npos,
+                         "a flag named as the command line spells it");
+            fuzz::expect(frame.cursor.x < 0.0f && !frame.screenshot, "a flag's line has no mouse");
+        }
         // "-" is the cursor at (-1, -1), unknown
         for (const float v : {frame.cursor.x, frame.cursor.y}) {
             fuzz::expect(std::isfinite(v) && std::abs(v) <= kMaxScriptCursor,
@@ -30,8 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
         fuzz::expect(frame.leftPresses == 0 || !frame.leftButton,
                      "a click between frames leaves the button up");
         // What the App makes of two frames: the move between them is finite.
-        fuzz::expect(std::isfinite(frame.cursor.x - frames.front().cursor.x) &&
-                         std::isfinite(frame.cursor.y - frames.front().cursor.y),
+        fuzz::expect(std::isfinite(frame.cursor.x - frames.front().input.cursor.x) &&
+                         std::isfinite(frame.cursor.y - frames.front().input.cursor.y),
                      "a finite move from frame to frame");
     }
     return 0;

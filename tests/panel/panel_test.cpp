@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -70,7 +72,9 @@ PanelRun runScripted(const std::string& sample, const std::vector<std::string>& 
                                      "--output", result.image.string()};
     argv.insert(argv.end(), kSize.begin(), kSize.end());
     argv.insert(argv.end(), args.begin(), args.end());
-    result.run = runSample(argv, {.setEnv = {{"PBR_PANEL_SCRIPT", scriptPath.string()}}});
+    // (in `dir`: an F12 line writes its picture there)
+    result.run = runSample(
+        argv, {.setEnv = {{"PBR_PANEL_SCRIPT", scriptPath.string()}}, .workingDirectory = dir});
     std::istringstream out(result.run.out);
     const std::string panelMark = sample + ": panel: ", commandMark = sample + ": command: ";
     for (std::string line; std::getline(out, line);) {
@@ -182,21 +186,6 @@ TEST(Panel, AStepperStepsTheFlag) {
     const PanelRun least = runScripted("01_lighting", down, dir, "least");
     EXPECT_EQ(valueIn(least.command, "--lights"), "0") << least.command;
     expectFrameIsTheCommands(least, dir);
-}
-
-// 04 reads --lights every frame too (it once looped over all four lights while --lights said 2):
-// its stepper lowers it live.
-TEST(Panel, A04StepperLowersItsLightsLive) {
-    const fs::path dir = testOutputDir("panel_stepper_04");
-    const auto controls04 = layoutOf("04_ibl_irradiance", dir);
-    ASSERT_TRUE(controls04.count("--lights -")) << "no stepper for 04's --lights";
-    const std::string minus04 = controls04.at("--lights -").at(0.5);
-    const PanelRun lowered = runScripted(
-        "04_ibl_irradiance",
-        {"-", hover(minus04), hold(minus04), hover(minus04), hold(minus04), hover(minus04)}, dir,
-        "stepped_04");
-    EXPECT_EQ(valueIn(lowered.command, "--lights"), "2") << lowered.command;
-    expectFrameIsTheCommands(lowered, dir);
 }
 
 TEST(Panel, AComboBoxChoiceIsTheFlagsWord) {
@@ -370,6 +359,206 @@ TEST(Panel, AMovedCamerasCommandDrawsTheSamePicture) {
         EXPECT_TRUE(readBytes(moved.image) ==
                     drawCommand(moved.command, dir / (sample + "_command.png")))
             << sample << ": the picture after the drag is not what `" << moved.command << "` draws";
+    }
+}
+
+// Every live flag, raised and then lowered while the sample runs (PBR_PANEL_SCRIPT's "set" lines,
+// the way a page's controls and the panel's change a flag): once all of a case's flags are
+// raised, the frame must be, byte for byte, what a run started with them draws; so must it once
+// all are lowered from there. 04 once looped over all four lights while --lights said 2, which
+// only a lowering shows. Then each flag alone is moved back, live: the picture must change, so
+// that each flag is seen in the state the comparison checks (a flag the sample reads once at
+// start-up fails here too). Every live control of a sample's panel must be in one of its cases.
+struct LiveFlag {
+    std::string flag;
+    // the values ("" for a switch: on; nullopt: left out, a switch off or a flag at its default)
+    std::optional<std::string> raised, lowered;
+};
+struct LiveCase {
+    std::string name;  // the test's
+    std::string sample;
+    std::vector<std::string> args;  // where the case's flags show
+    std::vector<LiveFlag> flags;
+};
+
+void PrintTo(const LiveCase& c, std::ostream* out) {
+    *out << c.name;
+}
+
+const std::optional<std::string> kOn = std::string(), kOff = std::nullopt;
+
+const std::vector<LiveCase>& liveCases() {
+    // A case's flags must each show in both states: --light (one light alone) hides --lights,
+    // --no-ibl hides the split sum, a term view hides the sky and the tone mapper, and the BRDF's
+    // terms (specular, diffuse) leave out the light's colour and attenuation.
+    const LiveFlag view = {"--view", "specular", "diffuse"}, gain = {"--gain", "4", "0.5"};
+    static const std::vector<LiveCase> cases = {
+        {"lighting01",
+         "01_lighting",
+         {},
+         {{"--lights", "4", "1"},
+          {"--light-color", "600,300,150", "50,100,200"},
+          {"--albedo", "0.9,0.6,0.1", "0.1,0.2,0.5"},
+          {"--roughness-offset", "0.3", "-0.3"},
+          {"--metallic-offset", "0.4", "-0.4"}}},
+        {"view01", "01_lighting", {}, {view, gain, {"--light", "3", "0"}}},
+        {"maps02",
+         "02_lighting_textured",
+         {},
+         {{"--no-albedo-map", kOn, kOff},
+          {"--no-normal-map", kOn, kOff},
+          {"--no-metallic-map", kOn, kOff},
+          {"--no-roughness-map", kOn, kOff},
+          {"--no-ao-map", kOn, kOff}}},
+        {"material02",
+         "02_lighting_textured",
+         {},
+         {{"--material", "gold", "grass"}, {"--tangent-frame", "derivatives", "mesh"}, view, gain}},
+        {"view04", "04_ibl_irradiance", {}, {{"--lights", "4", "1"}, view, gain}},
+        {"sky04",
+         "04_ibl_irradiance",
+         {},
+         {{"--no-ibl", kOn, kOff},
+          {"--background", "irradiance", "environment"},
+          {"--light", "3", "0"}}},
+        {"view05", "05_ibl_specular", {}, {{"--lights", "4", "1"}, view, gain}},
+        {"sky05",
+         "05_ibl_specular",
+         {},
+         {{"--split-sum", "exact", "text"},
+          {"--background", "prefiltered", "environment"},
+          {"--background-lod", "3", "0"}}},
+        {"light05", "05_ibl_specular", {}, {{"--no-ibl", kOn, kOff}, {"--light", "3", "0"}}},
+        {"light07",
+         "07_gltf_metallic_roughness",
+         {},
+         {{"--tonemap", "aces", "none"},
+          {"--exposure", "4", "0.25"},
+          {"--light", "2", "0"},
+          {"--single-scattering", kOn, kOff}}},
+        {"sources07",
+         "07_gltf_metallic_roughness",
+         {},
+         {{"--no-ibl", kOn, kOff}, {"--no-punctual", kOn, kOff}}},
+        {"view07", "07_gltf_metallic_roughness", {}, {view, gain}},
+        {"light08",
+         "08_gltf_specular_glossiness",
+         {},
+         {{"--tonemap", "aces", "none"},
+          {"--exposure", "4", "0.25"},
+          {"--light", "2", "0"},
+          {"--single-scattering", kOn, kOff}}},
+        {"sources08",
+         "08_gltf_specular_glossiness",
+         {},
+         {{"--no-ibl", kOn, kOff}, {"--no-punctual", kOn, kOff}}},
+        {"view08", "08_gltf_specular_glossiness", {}, {view, gain}},
+        {"light09",
+         "09_light_types",
+         {},
+         {{"--only", "point", "all"},
+          {"--point-lights", "8", "0"},
+          {"--attenuation", "1,0.09,0.032", "1,0.7,1.8"}}},
+        {"view09", "09_light_types", {}, {view, gain}},
+    };
+    return cases;
+}
+
+std::string setLine(const std::string& flag, const std::optional<std::string>& value) {
+    if (!value) return "unset " + flag;
+    return value->empty() ? "set " + flag : "set " + flag + " " + *value;
+}
+
+class LiveFlags : public ::testing::TestWithParam<LiveCase> {};
+
+TEST_P(LiveFlags, RaisedAndLoweredLiveEachDrawsWhatItsCommandDraws) {
+    const LiveCase& c = GetParam();
+    const fs::path dir = testOutputDir("live_flags_" + c.name);
+    // The script, and the line of each picture it takes (F12 writes screenshot-<sample>-<line>).
+    std::vector<std::string> script = {"-"};
+    const auto shot = [&] {
+        script.push_back("F12");
+        return script.size() - 1;
+    };
+    struct Phase {
+        const char* name;
+        size_t all = 0;                  // every flag moved
+        std::vector<size_t> eachBack{};  // one flag moved back
+    };
+    Phase phases[2] = {{"raised"}, {"lowered"}};
+    for (int p = 0; p < 2; ++p) {
+        const auto to = [&](const LiveFlag& f) { return p == 0 ? f.raised : f.lowered; };
+        const auto back = [&](const LiveFlag& f) { return p == 0 ? f.lowered : f.raised; };
+        for (const LiveFlag& f : c.flags) script.push_back(setLine(f.flag, to(f)));
+        phases[p].all = shot();
+        for (const LiveFlag& f : c.flags) {
+            script.push_back(setLine(f.flag, back(f)));
+            phases[p].eachBack.push_back(shot());
+            script.push_back(setLine(f.flag, to(f)));
+        }
+    }
+    const std::vector<std::string> small = {"--size", "160x90"};
+    std::vector<std::string> args = small;
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    const PanelRun live = runScripted(c.sample, script, dir, "live", args);
+    const RunResult& run = live.run;
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(run.err.find("GL error"), std::string::npos) << run.err;
+    // (02 once set the sampler of a map its switch had compiled out, a note each change)
+    EXPECT_EQ(run.err.find("no active uniform"), std::string::npos) << run.err;
+    const auto picture = [&](size_t line) {
+        return readBytes(dir / ("screenshot-" + c.sample + "-" + std::to_string(line) + ".png"));
+    };
+    for (int p = 0; p < 2; ++p) {
+        // A run started with the phase's values.
+        std::vector<std::string> argv = {c.sample, "--headless", "--output",
+                                         (dir / (std::string(phases[p].name) + ".png")).string()};
+        argv.insert(argv.end(), args.begin(), args.end());
+        std::string flags;
+        for (const LiveFlag& f : c.flags) {
+            const std::optional<std::string>& value = p == 0 ? f.raised : f.lowered;
+            if (!value) continue;
+            argv.push_back(f.flag);
+            if (!value->empty()) argv.push_back(*value);
+            flags += " " + f.flag + (value->empty() ? "" : " " + *value);
+        }
+        const RunResult started = runSample(argv);
+        ASSERT_EQ(started.exitCode, 0) << started.err;
+        const std::string all = picture(phases[p].all);
+        ASSERT_FALSE(all.empty()) << "no screenshot of line " << phases[p].all << "\n" << run.out;
+        EXPECT_TRUE(all == readBytes(dir / (std::string(phases[p].name) + ".png")))
+            << c.sample << ": the flags " << phases[p].name
+            << " live do not draw what a run started with them draws:" << flags;
+        for (size_t i = 0; i < c.flags.size(); ++i) {
+            EXPECT_FALSE(picture(phases[p].eachBack[i]) == all)
+                << c.sample << ": moving " << c.flags[i].flag << " back, live, from the "
+                << phases[p].name << " state (" << flags << ") changed nothing";
+        }
+    }
+    // Every live control of the sample's panel is in one of its cases.
+    std::set<std::string> covered;
+    for (const LiveCase& other : liveCases()) {
+        if (other.sample != c.sample) continue;
+        for (const LiveFlag& f : other.flags) covered.insert(f.flag);
+    }
+    for (const auto& [id, rect] : live.controls) {
+        if (id.rfind("--", 0) != 0) continue;
+        const std::string flag = id.substr(0, id.find_first_of(" ="));
+        EXPECT_TRUE(covered.count(flag)) << c.sample << "'s live " << flag << " is in no case";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Every, LiveFlags, ::testing::ValuesIn(liveCases()),
+                         [](const auto& info) { return info.param.name; });
+
+// The samples without a case have no live control.
+TEST(LiveFlags, TheSamplesWithoutACaseHaveNoLiveControl) {
+    const fs::path dir = testOutputDir("live_flags_none");
+    for (const std::string sample : {"03_gltf_unlit", "06_brdf_lut"}) {
+        for (const LiveCase& c : liveCases()) ASSERT_NE(c.sample, sample);
+        for (const auto& [id, rect] : layoutOf(sample, dir)) {
+            EXPECT_NE(id.rfind("--", 0), 0u) << sample << "'s live " << id << " is in no case";
+        }
     }
 }
 
