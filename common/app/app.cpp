@@ -323,14 +323,15 @@ void App::clearFrame(View view, const glm::vec3& pictureColor) {
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     Shader& ground = shader("ibl/fullscreen.vert", "common/view_ground.frag");
-    // levels 56 and 72 in the picture: an sRGB target encodes what it is given
+    // levels 32 and 96 in the picture (an sRGB target encodes what it is given): any flat grey
+    // is 32 levels or more from one of them (56 and 72 hid 08's spheres of roughness 0.25)
     const auto level = [&](float byte) {
         const float v = byte / 255.0f;
         return glm::vec3(config_.srgbTarget ? std::pow((v + 0.055f) / 1.055f, 2.4f) : v);
     };
     ground.use();
-    ground.set("dark", level(56.0f));
-    ground.set("light", level(72.0f));
+    ground.set("dark", level(32.0f));
+    ground.set("light", level(96.0f));
     if (!groundQuad_) groundQuad_ = std::make_unique<GpuMesh>(quad());
     groundQuad_->draw();
 }
@@ -484,6 +485,7 @@ bool App::nextFrame() {
             }
         }
         input.screenshot = scripted.screenshot;
+        input.togglePanel = scripted.togglePanel;
         input.cursor = scripted.cursor;
         input.leftButton = scripted.leftButton;
         input.leftPresses = scripted.leftPresses;
@@ -507,6 +509,10 @@ bool App::nextFrame() {
 #endif
     if (input.togglePanel && panel_) {
         panelShown_ = !panelShown_;
+        // The frame's move was made in the other mode (a free cursor over the panel, or a look):
+        // it neither turns the camera nor works the panel now. At a software GL's 1-3 frames a
+        // second it is the whole way the hand went before Tab, which once turned the camera.
+        input.mouseDelta = input.dragDelta = glm::vec2(0.0f);
         if (context_->windowed() && !config_.orbitCamera && !config_.fixedView) {
             context_->setCursorCaptured(mouseLook());
         }
@@ -672,7 +678,14 @@ void App::endFrame() {
     if (panel_ && !caption.empty() && (context_->windowed() || options_.panel || options_.caption))
         panel_->caption(caption, viewScale(*currentView()), gain);
 #ifdef PBR_WEBGL
-    if (context_->windowed()) web::showCaption(caption);
+    if (context_->windowed()) {
+        std::vector<std::pair<float, std::string>> ticks;
+        if (currentView()) {
+            for (ScaleTick& tick : viewScaleTicks(viewScale(*currentView()), gain))
+                ticks.emplace_back(tick.at, std::move(tick.value));
+        }
+        web::showCaption(caption, ticks);
+    }
 #endif
     // --panel: the panel and the labels are part of the picture; in a window they are drawn over
     // the picture shown, and F12 writes what a headless run writes. --caption: the labels and

@@ -77,9 +77,9 @@ struct Options {
     bool help = false;
     bool headless = false;
     bool benchmark = false;
-    bool panel = false;  // --panel: the live panel drawn into the picture, headless too
+    bool panel = false;    // --panel: the live panel drawn into the picture, headless too
     bool caption = false;  // --caption: a view's caption drawn into the picture, headless too
-    std::string output;  // empty: "<sample>.png" in the working directory
+    std::string output;    // empty: "<sample>.png" in the working directory
     int width = 1280, height = 720;
     std::optional<int> frames;   // unset: 1 headless, until closed in a window, 30 for --benchmark
     std::optional<double> time;  // fixed scene time; headless default 0

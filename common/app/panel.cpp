@@ -292,28 +292,13 @@ void Panel::caption(const std::string& text, ViewScale scale, float gain) {
     list->AddRectFilledMultiColor(bar, ImVec2(bar.x + barWidth, bar.y + 8.0f),
                                   IM_COL32(0, 0, 0, 255), IM_COL32(255, 255, 255, 255),
                                   IM_COL32(255, 255, 255, 255), IM_COL32(0, 0, 0, 255));
-    const auto tick = [&](float level, std::string value) {
-        if (value != "0" && scale == ViewScale::Compressed && gain != 1.0f) {
-            char text[16];  // x of x / (1 + x) before the gain
-            std::snprintf(text, sizeof text, "%.3g", std::strtod(value.c_str(), nullptr) / gain);
-            value = text;
-        }
-        const float x = std::round(bar.x + level * barWidth);
+    for (const ScaleTick& tick : viewScaleTicks(scale, gain)) {
+        const float x = std::round(bar.x + tick.at * barWidth);
         list->AddLine(ImVec2(x, bar.y + 8.0f), ImVec2(x, bar.y + 11.0f),
                       IM_COL32(235, 235, 235, 255));
-        const float w = ImGui::CalcTextSize(value.c_str()).x;
+        const float w = ImGui::CalcTextSize(tick.value.c_str()).x;
         list->AddText(ImVec2(std::clamp(x - 0.5f * w, bar.x, bar.x + barWidth - w), bar.y + 11.0f),
-                      IM_COL32(235, 235, 235, 255), value.c_str());
-    };
-    if (scale == ViewScale::AsItIs) {
-        tick(0.0f, "0");
-        tick(0.5f, "0.5");
-        tick(1.0f, "1");
-    } else {  // x / (1 + x): x = 0, 0.25, 1, 4 at 0, 0.2, 0.5, 0.8
-        tick(0.0f, "0");
-        tick(0.2f, "0.25");
-        tick(0.5f, "1");
-        tick(0.8f, "4");
+                      IM_COL32(235, 235, 235, 255), tick.value.c_str());
     }
 }
 

@@ -39,7 +39,7 @@ struct PanelInput {
 // What the panel shows besides the flags, and what was clicked there this frame.
 struct PanelStatus {
     std::string title;
-    std::string commandLine;  // the command that draws what is on screen
+    std::string commandLine;          // the command that draws what is on screen
     double frameMilliseconds = -1.0;  // negative: not shown (headless, whose picture must repeat)
     bool paused = false;
     // set by Panel::update

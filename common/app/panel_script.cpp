@@ -44,16 +44,29 @@ std::vector<ScriptFrame> parsePanelScript(std::string_view text, const std::stri
             if (first == "set") script.value = value;
         } else if (line == "F12") {
             frame.screenshot = true;
+        } else if (line == "Tab") {
+            frame.togglePanel = true;
         } else if (line != "-") {
             std::istringstream fields(line);
             int button = 0;
             bool read = bool(fields >> frame.cursor.x >> frame.cursor.y >> button);
-            if (read && !(fields >> std::ws).eof()) read = bool(fields >> frame.scroll);
-            if (!read || (fields >> rest) || button < 0 || button > 2) {
+            std::vector<std::string> more;  // [scroll] [Tab]
+            for (std::string word; read && fields >> word;) more.push_back(word);
+            if (!more.empty() && more.back() == "Tab") {
+                frame.togglePanel = true;
+                more.pop_back();
+            }
+            if (more.size() == 1) {
+                std::istringstream number(more[0]);
+                read = bool(number >> frame.scroll) && (number >> std::ws).eof();
+            } else if (more.size() > 1) {
+                read = false;
+            }
+            if (!read || button < 0 || button > 2) {
                 throw Error(where +
-                            "' is not 'x y button [scroll]' (button 0 up, 1 held, 2 clicked "
+                            "' is not 'x y button [scroll] [Tab]' (button 0 up, 1 held, 2 clicked "
                             "between frames; scroll steps, up positive), '-', 'set --flag "
-                            "[value]', 'unset --flag' or 'F12'");
+                            "[value]', 'unset --flag', 'F12' or 'Tab'");
             }
             if (!(std::abs(frame.scroll) <= kMaxScriptScroll)) {
                 throw Error(where + "': a scroll of more than 100 steps in a frame");

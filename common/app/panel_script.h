@@ -18,7 +18,7 @@ inline constexpr float kMaxScriptScroll = 100.0f;
 
 // One line of a script: the mouse of a frame, and what else happens before it is drawn.
 struct ScriptFrame {
-    InputFrame input;  // the mouse (cursor negative: none); `screenshot` for "F12"
+    InputFrame input;  // the mouse (cursor negative: none); `screenshot` (F12), `togglePanel` (Tab)
     // "set --flag [VALUE]", "unset --flag": a live flag changed before the frame, as a page's
     // control changes it (App::setLiveFlag); empty: none.
     std::string flag;
@@ -27,13 +27,16 @@ struct ScriptFrame {
 };
 
 // The frames of a panel script's text, a frame a line:
-//   "x y button [scroll]"  the mouse there (framebuffer pixels from the top-left; the left button
+//   "x y button [scroll] [Tab]"
+//                          the mouse there (framebuffer pixels from the top-left; the left button
 //                          0 up, 1 held, 2 pressed and released since the last frame: a click
-//                          shorter than a frame; the wheel's steps, up positive, 0 when left out)
+//                          shorter than a frame; the wheel's steps, up positive, 0 when left out),
+//                          and Tab pressed in the same frame
 //   "-"                    no mouse
 //   "set --flag [VALUE]"   the live flag takes VALUE (a switch: on), no mouse
 //   "unset --flag"         the live flag is left out (a switch off), no mouse
 //   "F12"                  no mouse, and the frame is written as a window's F12 writes it
+//   "Tab"                  no mouse, and Tab pressed (the panel hidden or shown)
 // Frames past the last line have none. Throws Error("<name>:<line>: ...") for any other line.
 std::vector<ScriptFrame> parsePanelScript(std::string_view text, const std::string& name);
 

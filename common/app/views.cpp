@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "base/error.h"
@@ -169,6 +171,19 @@ View viewNamed(std::string_view name) {
 std::vector<std::string> viewDefines(View view) {
     if (view == View::Final) return {};
     return {"TERM_VIEWS"};
+}
+
+std::vector<ScaleTick> viewScaleTicks(ViewScale scale, float gain) {
+    if (scale == ViewScale::None) return {};
+    if (scale == ViewScale::AsItIs) return {{0.0f, "0"}, {0.5f, "0.5"}, {1.0f, "1"}};
+    // x / (1 + x): x = 0, 0.25, 1, 4 at 0, 0.2, 0.5, 0.8; x is the value times the gain
+    std::vector<ScaleTick> ticks = {{0.0f, "0"}};
+    for (const auto& [at, x] : {std::pair{0.2f, 0.25f}, {0.5f, 1.0f}, {0.8f, 4.0f}}) {
+        char text[16];
+        std::snprintf(text, sizeof text, "%.3g", double(x / gain));
+        ticks.push_back({at, text});
+    }
+    return ticks;
 }
 
 FlagSpec viewGainFlag() {

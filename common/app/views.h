@@ -106,6 +106,15 @@ std::string viewCaption(View view);
 // normal, or a tone-mapped light), as they are (0 to 1), or x / (1 + x) (0 to infinity).
 enum class ViewScale { None, AsItIs, Compressed };
 ViewScale viewScale(View view);
+// A tick of a scale bar: where on the bar (0 to 1, the picture's levels 0 to 255) a value lands,
+// and the value's text.
+struct ScaleTick {
+    float at;
+    std::string value;
+};
+// The ticks of a view's scale bar (none for ViewScale::None): 0, 0.5 and 1 as they are, or x of
+// x / (1 + x) at 0, 0.25, 1 and 4, each divided by the gain (--gain) that scaled it.
+std::vector<ScaleTick> viewScaleTicks(ViewScale scale, float gain);
 // The shaders' VIEW_ constant of a view: "VIEW_NDOTL", "VIEW_AMBIENT_DIFFUSE".
 std::string viewConstant(View view);
 // --view NAME, a choice of `views` (the first is the default).

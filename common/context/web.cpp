@@ -58,8 +58,8 @@ EM_JS(void, pbr_mouse_hint, (const char* text), {
 EM_JS(void, pbr_show_frame, (double milliseconds, const char* command, int paused), {
     if (Module["pbrShowFrame"]) Module["pbrShowFrame"](milliseconds, UTF8ToString(command), paused);
 });
-EM_JS(void, pbr_show_caption, (const char* text), {
-    if (Module["pbrShowCaption"]) Module["pbrShowCaption"](UTF8ToString(text));
+EM_JS(void, pbr_show_caption, (const char* text, const char* ticks), {
+    if (Module["pbrShowCaption"]) Module["pbrShowCaption"](UTF8ToString(text), UTF8ToString(ticks));
 });
 EM_JS(int, pbr_take_clock_presses, (), {
     var pressed = Module["pbrClock"] || 0;
@@ -112,8 +112,13 @@ void showFrame(double milliseconds, const std::string& commandLine, bool paused)
     pbr_show_frame(milliseconds, commandLine.c_str(), paused ? 1 : 0);
 }
 
-void showCaption(const std::string& text) {
-    pbr_show_caption(text.c_str());
+void showCaption(const std::string& text, const std::vector<std::pair<float, std::string>>& ticks) {
+    // "at value" pairs, ';' between them (a tick's text is a number)
+    std::string list;
+    for (const auto& [at, value] : ticks) {
+        list += (list.empty() ? "" : ";") + std::to_string(at) + " " + value;
+    }
+    pbr_show_caption(text.c_str(), list.c_str());
 }
 
 ClockPresses takeClockPresses() {

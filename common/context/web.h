@@ -48,8 +48,9 @@ void mouseHint(const std::string& text);
 // The bar under a shown picture, as the window's panel has it: the frame time (negative: none
 // yet), the command line of the view, and whether time stands (pause or run).
 void showFrame(double milliseconds, const std::string& commandLine, bool paused);
-// A view's caption over the picture's top left ("" for none).
-void showCaption(const std::string& text);
+// A view's caption over the picture's top left ("" for none), with a scale bar under it where
+// `ticks` has any: {where on the bar from 0 to 1, the value's text} (viewScaleTicks).
+void showCaption(const std::string& text, const std::vector<std::pair<float, std::string>>& ticks);
 // The bar's pause and step buttons pressed since the last frame.
 struct ClockPresses {
     bool pause = false, step = false;

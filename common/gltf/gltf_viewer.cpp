@@ -115,6 +115,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     std::map<const Shader*, std::unique_ptr<GltfRenderer>> renderers;
 
     glEnable(GL_DEPTH_TEST);
+    int saidAlone = 0;  // the --light K past the file's lights last said so (once a value)
     while (app.nextFrame()) {
         const bool ibl = !app.options().has("--no-ibl");
         const bool punctual = !app.options().has("--no-punctual");
@@ -130,6 +131,14 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         if (alone > 0)
             shown = size_t(alone) <= shown.size() ? shown.subspan(size_t(alone - 1), 1)
                                                   : std::span<const PunctualLight>();
+        if (alone > 0 && size_t(alone) > lights.size() && alone != saidAlone) {
+            std::fprintf(stderr,
+                         "note: --light %d: there %s only %zu punctual light%s (the model's, else "
+                         "the default one); no light is drawn\n",
+                         alone, lights.size() == 1 ? "is" : "are", lights.size(),
+                         lights.size() == 1 ? "" : "s");
+        }
+        saidAlone = alone > 0 && size_t(alone) > lights.size() ? alone : 0;
         renderer->setLights(shown);
         // Made again after R: the cache's keys hold the shaders' code, so an edited IBL shader
         // is computed anew.

@@ -1,7 +1,7 @@
 #version 330 core
 // What a term view is drawn on (App::clearFrame): a checker of two greys in 16-pixel cells, not
 // the sky or the scene, so that no value of a view melts into it (a flat value differs from one
-// of the two greys by 8 levels at least).
+// of the two greys by 32 levels at least).
 out vec4 FragColor;
 
 uniform vec3 dark;   // written as they are: the App picks them for the target's encoding

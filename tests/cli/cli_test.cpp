@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include "base/paths.h"
@@ -184,6 +185,26 @@ TEST(Cli, NoDisplayFallsBackToOffscreen) {
     const fs::path written = dir / "01_lighting.png";
     EXPECT_TRUE(fs::exists(written));
     EXPECT_NE(run.out.find(written.string()), std::string::npos) << run.out;
+}
+
+// 07's --light K past the file's punctual lights (a number the command line cannot check, since
+// the model decides it): no light, as --no-punctual draws, and a note saying so, not silence.
+TEST(Cli, A07LightPastTheFilesLightsIsSaid) {
+    const fs::path dir = testOutputDir("cli_light_past");
+    const std::vector<std::string> common = {"07_gltf_metallic_roughness", "--headless", "--size",
+                                             "96x54"};
+    std::vector<std::string> past = common, none = common;
+    past.insert(past.end(), {"--light", "8", "--output", (dir / "past.png").string()});
+    none.insert(none.end(), {"--no-punctual", "--output", (dir / "none.png").string()});
+    const RunResult run = runSample(past);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_TRUE(std::regex_search(
+        run.err, std::regex("note: --light 8: there (is|are) only [0-9]+ punctual lights?.*; no "
+                            "light is drawn\n")))
+        << run.err;
+    ASSERT_EQ(runSample(none).exitCode, 0);
+    EXPECT_TRUE(readBytes(dir / "past.png") == readBytes(dir / "none.png"))
+        << "--light 8 should draw what --no-punctual draws";
 }
 
 }  // namespace

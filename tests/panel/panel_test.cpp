@@ -338,6 +338,23 @@ TEST(Panel, TheMouseOverThePanelLeavesTheCameraAlone) {
         << "a drag over the picture should turn the camera: " << outside.command;
 }
 
+// Tab hides the panel, and the mouse looks again (01's fly camera): the move of the frame in
+// which Tab was pressed was made with a free cursor, and must not turn the camera (at a software
+// GL's 1-3 frames a second it is the whole way the hand went before Tab; once it turned the
+// camera). The next move does.
+TEST(Panel, TabHidesThePanelWithoutTurningTheCamera) {
+    const fs::path dir = testOutputDir("panel_tab");
+    const PanelRun hidden =
+        runScripted("01_lighting", {"-", "100 300 0", "300 250 0 0 Tab", "-"}, dir, "hidden");
+    ASSERT_EQ(hidden.run.exitCode, 0) << hidden.run.err;
+    EXPECT_EQ(valueIn(hidden.command, "--camera"), "0,0,23,-90,0") << hidden.command;
+    const PanelRun looked = runScripted(
+        "01_lighting", {"-", "100 300 0", "300 250 0 0 Tab", "320 250 0", "-"}, dir, "looked");
+    ASSERT_EQ(looked.run.exitCode, 0) << looked.run.err;
+    EXPECT_NE(valueIn(looked.command, "--camera"), "0,0,23,-90,0")
+        << "after Tab the mouse should look: " << looked.command;
+}
+
 // A moved camera's command line draws the very same picture: the fly camera's pose (01) and the
 // orbit camera's (07, which once replayed 339 pixels one level off), each number the shortest
 // text that reads back to the same float (never "2.200000047683716").
@@ -413,7 +430,10 @@ const std::vector<LiveCase>& liveCases() {
         {"material02",
          "02_lighting_textured",
          {},
-         {{"--material", "gold", "grass"}, {"--tangent-frame", "derivatives", "mesh"}, view, gain}},
+         {{"--material", "gold", "grass"},
+          {"--tangent-frame", "derivatives", "mesh"},
+          {"--view", "specular", "ndotl"},  // (the diffuse term leaves the normal out)
+          gain}},
         {"view04", "04_ibl_irradiance", {}, {{"--lights", "4", "1"}, view, gain}},
         {"sky04",
          "04_ibl_irradiance",
@@ -497,7 +517,8 @@ TEST_P(LiveFlags, RaisedAndLoweredLiveEachDrawsWhatItsCommandDraws) {
             script.push_back(setLine(f.flag, to(f)));
         }
     }
-    const std::vector<std::string> small = {"--size", "160x90"};
+    // small and single-sampled: the frames are many, and a change shows at any size
+    const std::vector<std::string> small = {"--size", "160x90", "--msaa", "0"};
     std::vector<std::string> args = small;
     args.insert(args.end(), c.args.begin(), c.args.end());
     const PanelRun live = runScripted(c.sample, script, dir, "live", args);

@@ -101,6 +101,8 @@ PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
             page.frame = readBytes(entry.path());
         } else if (name == "caption.txt") {
             page.caption = readBytes(entry.path());
+        } else if (name == "scale.txt") {
+            page.scale = readBytes(entry.path());
         } else if (name == "exit.txt") {
             page.exitCode = std::atoi(readBytes(entry.path()).c_str());
         } else if (entry.is_regular_file() && name.front() != '.') {

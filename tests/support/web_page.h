@@ -24,6 +24,7 @@ struct PageRun {
     std::string command;            // the bar's command line under a shown picture
     std::string frame;              // the bar's frame time ("143 ms a frame")
     std::string caption;            // a view's caption over a shown picture
+    std::string scale;              // its scale bar's ticks: "at value" pairs, ';' between them
 };
 
 // Why the web tests cannot run on this machine (no browser, no web build), or nullopt.

@@ -4,8 +4,8 @@
 // string at the end (address.txt: the page's controls keep it current), every text its
 // header showed, one a line (said.txt), its line on the mouse and keys (hint.txt), the bar's
 // command line and frame time under a shown picture (command.txt, frame.txt), a view's caption
-// (caption.txt), and, when the address asks for one with shot=N after '#'
-// (web/shell.html), the canvas as the browser showed frame N for a person to see, cut from a
+// (caption.txt) and its scale bar's ticks ("at value;...", scale.txt), and, when the address
+// asks for one with shot=N after '#' (web/shell.html), the canvas as the browser showed frame N for a person to see, cut from a
 // screenshot of the page (canvas-screenshot.png): not the program's own read-back, so what WebGL
 // does to a picture on its way to the screen is in it. The browser is driven over the DevTools protocol on a
 // pipe (tests/support/chromium_pipe.js), so nothing waits on a guess: not a virtual-time budget,
@@ -43,7 +43,10 @@ const collect = `(function () {
                          hint: (document.getElementById("pbr-hint") || {}).textContent || "",
                          command: (document.getElementById("pbr-command") || {}).textContent || "",
                          frame: (document.getElementById("pbr-frame") || {}).textContent || "",
-                         caption: (document.getElementById("pbr-caption") || {}).textContent || "" });
+                         caption: (document.getElementById("pbr-caption-text") || {}).textContent || "",
+                         scale: Array.from(document.querySelectorAll("#pbr-caption-scale span"))
+                             .map(function (e) { return e.getAttribute("data-at") + " " + e.textContent; })
+                             .join(";") });
 })()`;
 
 // The canvas's place in the page, once the page holds a frame for its screenshot (null before).
@@ -91,6 +94,7 @@ function finish(code, why) {
       writeWhole(path.join(dir, "command.txt"), page.command);
       writeWhole(path.join(dir, "frame.txt"), page.frame);
       writeWhole(path.join(dir, "caption.txt"), page.caption);
+      writeWhole(path.join(dir, "scale.txt"), page.scale);
       clearTimeout(timer);
       finish(0);
     }
