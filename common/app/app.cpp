@@ -474,14 +474,16 @@ bool App::nextFrame() {
                                                                 : InputFrame{};
         };
         const InputFrame scripted = scriptedAt(frameIndex_), before = scriptedAt(frameIndex_ - 1);
-        if (size_t(frameIndex_) < script_.size() && !script_[size_t(frameIndex_)].flag.empty()) {
-            // A live flag set as a page's control sets it; a script that names another flag, or
+        if (size_t(frameIndex_) < script_.size()) {
+            // Live flags set as a page's controls set them; a script that names another flag, or
             // a value the flag refuses, ends the run (the test that wrote it is wrong).
-            const ScriptFrame& line = script_[size_t(frameIndex_)];
-            if (!setLiveFlag(line.flag, line.value)) {
-                throw Error(scriptPath_ + ":" + std::to_string(frameIndex_ + 1) + ": " + line.flag +
-                            (line.value ? " " + printable(*line.value) : std::string()) +
-                            ": not a live flag of " + config_.name + ", or a value it refuses");
+            for (const ScriptFlagChange& change : script_[size_t(frameIndex_)].changes) {
+                if (!setLiveFlag(change.flag, change.value)) {
+                    throw Error(scriptPath_ + ": frame " + std::to_string(frameIndex_ + 1) + ": " +
+                                change.flag +
+                                (change.value ? " " + printable(*change.value) : std::string()) +
+                                ": not a live flag of " + config_.name + ", or a value it refuses");
+                }
             }
         }
         input.screenshot = scripted.screenshot;

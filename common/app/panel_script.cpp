@@ -22,13 +22,14 @@ bool isFlagName(const std::string& word) {
 
 std::vector<ScriptFrame> parsePanelScript(std::string_view text, const std::string& name) {
     std::vector<ScriptFrame> frames;
+    std::vector<ScriptFlagChange> changes;  // the flags' lines since the last frame
     // Lines as std::getline splits a file: a last line without its '\n' still counts.
+    int number = 0;
     for (size_t at = 0; at < text.size();) {
         const size_t end = std::min(text.find('\n', at), text.size());
         const std::string line(text.substr(at, end - at));
         at = end + 1;
-        const std::string where =
-            name + ":" + std::to_string(frames.size() + 1) + ": '" + printable(line);
+        const std::string where = name + ":" + std::to_string(++number) + ": '" + printable(line);
         ScriptFrame script;
         InputFrame& frame = script.input;
         std::istringstream words(line);
@@ -40,8 +41,8 @@ std::vector<ScriptFrame> parsePanelScript(std::string_view text, const std::stri
             if (!read || (words >> rest)) {
                 throw Error(where + "' is not 'set --flag [value]' or 'unset --flag'");
             }
-            script.flag = flag;
-            if (first == "set") script.value = value;
+            changes.push_back({flag, first == "set" ? std::optional(value) : std::nullopt});
+            continue;
         } else if (line == "F12") {
             frame.screenshot = true;
         } else if (line == "Tab") {
@@ -79,8 +80,11 @@ std::vector<ScriptFrame> parsePanelScript(std::string_view text, const std::stri
             frame.leftButton = button == 1;
             frame.leftPresses = button == 2 ? 1 : 0;
         }
+        script.changes = std::move(changes);
+        changes.clear();
         frames.push_back(std::move(script));
     }
+    if (!changes.empty()) frames.push_back({.input = {}, .changes = std::move(changes)});
     return frames;
 }
 

@@ -19,15 +19,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
         fuzz::finding(std::string("not an Error but ") + fuzz::typeName(typeid(e)) + ": " +
                       e.what());
     }
-    fuzz::expect(frames.size() == fuzz::split(text, '\n').size(), "a frame a line");
-    for (const ScriptFrame& line : frames) {
-        const InputFrame& frame = line.input;
-        if (!line.flag.empty()) {
-            fuzz::expect(line.flag.size() > 2 && line.flag.rfind("--", 0) == 0 &&
-                             line.flag.find_first_not_of("-abcdefghijklmnopqrstuvwxyz0123456789") ==
-                                 std::string::npos,
+    // a frame a line, but for the flags' lines (and one more frame for those after the last)
+    size_t changes = 0;
+    for (const ScriptFrame& frame : frames) changes += frame.changes.size();
+    const size_t lines = fuzz::split(text, '\n').size();
+    fuzz::expect(frames.size() + changes == lines ||
+                     (frames.size() + changes == lines + 1 && !frames.back().changes.empty()),
+                 "a frame a line, but for the flags' lines");
+    for (const ScriptFrame& script : frames) {
+        const InputFrame& frame = script.input;
+        for (const ScriptFlagChange& change : script.changes) {
+            fuzz::expect(change.flag.size() > 2 && change.flag.rfind("--", 0) == 0 &&
+                             change.flag.find_first_not_of(
+                                 "-abcdefghijklmnopqrstuvwxyz0123456789") == std::string::npos,
                          "a flag named as the command line spells it");
-            fuzz::expect(frame.cursor.x < 0.0f && !frame.screenshot, "a flag's line has no mouse");
+            fuzz::expect(
+                !change.value || change.value->find_first_of(" \t\r\n") == std::string::npos,
+                "a flag's value is one word");
         }
         // "-" is the cursor at (-1, -1), unknown
         for (const float v : {frame.cursor.x, frame.cursor.y}) {

@@ -55,6 +55,18 @@ std::string click(const std::string& point) {
 
 const std::vector<std::string> kSize = {"--size", "640x360"};
 
+// The frames of a script: a line each, but for the flags' lines ("set", "unset"), which change the
+// next frame (one more after the last).
+size_t framesOf(const std::vector<std::string>& script) {
+    size_t frames = 0;
+    bool changes = false;
+    for (const std::string& line : script) {
+        changes = line.rfind("set ", 0) == 0 || line.rfind("unset ", 0) == 0;
+        frames += changes ? 0 : 1;
+    }
+    return frames + (changes ? 1 : 0);
+}
+
 // `sample` headless with the panel driven by `script` (a frame a line, then one frame more
 // without the mouse: the frame after the last change).
 PanelRun runScripted(const std::string& sample, const std::vector<std::string>& script,
@@ -68,7 +80,7 @@ PanelRun runScripted(const std::string& sample, const std::vector<std::string>& 
     PanelRun result;
     result.image = dir / (name + ".png");
     std::vector<std::string> argv = {sample,     "--headless",
-                                     "--frames", std::to_string(script.size() + 1),
+                                     "--frames", std::to_string(framesOf(script) + 1),
                                      "--output", result.image.string()};
     argv.insert(argv.end(), kSize.begin(), kSize.end());
     argv.insert(argv.end(), args.begin(), args.end());
@@ -494,11 +506,13 @@ class LiveFlags : public ::testing::TestWithParam<LiveCase> {};
 TEST_P(LiveFlags, RaisedAndLoweredLiveEachDrawsWhatItsCommandDraws) {
     const LiveCase& c = GetParam();
     const fs::path dir = testOutputDir("live_flags_" + c.name);
-    // The script, and the line of each picture it takes (F12 writes screenshot-<sample>-<line>).
+    // The script, and the frame of each picture it takes (F12 writes screenshot-<sample>-<frame>;
+    // a flag's line is not a frame, but changes the next).
     std::vector<std::string> script = {"-"};
+    size_t frames = 1;
     const auto shot = [&] {
         script.push_back("F12");
-        return script.size() - 1;
+        return frames++;
     };
     struct Phase {
         const char* name;
@@ -527,8 +541,8 @@ TEST_P(LiveFlags, RaisedAndLoweredLiveEachDrawsWhatItsCommandDraws) {
     EXPECT_EQ(run.err.find("GL error"), std::string::npos) << run.err;
     // (02 once set the sampler of a map its switch had compiled out, a note each change)
     EXPECT_EQ(run.err.find("no active uniform"), std::string::npos) << run.err;
-    const auto picture = [&](size_t line) {
-        return readBytes(dir / ("screenshot-" + c.sample + "-" + std::to_string(line) + ".png"));
+    const auto picture = [&](size_t frame) {
+        return readBytes(dir / ("screenshot-" + c.sample + "-" + std::to_string(frame) + ".png"));
     };
     for (int p = 0; p < 2; ++p) {
         // A run started with the phase's values.
@@ -546,7 +560,7 @@ TEST_P(LiveFlags, RaisedAndLoweredLiveEachDrawsWhatItsCommandDraws) {
         const RunResult started = runSample(argv);
         ASSERT_EQ(started.exitCode, 0) << started.err;
         const std::string all = picture(phases[p].all);
-        ASSERT_FALSE(all.empty()) << "no screenshot of line " << phases[p].all << "\n" << run.out;
+        ASSERT_FALSE(all.empty()) << "no screenshot of frame " << phases[p].all << "\n" << run.out;
         EXPECT_TRUE(all == readBytes(dir / (std::string(phases[p].name) + ".png")))
             << c.sample << ": the flags " << phases[p].name
             << " live do not draw what a run started with them draws:" << flags;

@@ -35,11 +35,10 @@ namespace fs = std::filesystem;
 
 constexpr int kSize = 400;  // square renders: --size 400x400
 
-// 07 on `model`, image-based light off (or, `ibl`, the file's punctual lights), no tone mapping,
-// no MSAA, from `eye` (looking at the model's centre).
-Image render07(const fs::path& dir, const fs::path& model, const glm::vec3& eye,
-               std::vector<std::string> extra = {},
-               const std::string& sample = "07_gltf_metallic_roughness", bool ibl = false) {
+// 07's flags for `model`, image-based light off (or, `ibl`, the file's punctual lights), no tone
+// mapping, no MSAA, from `eye` (looking at the model's centre); `extra` added.
+std::vector<std::string> args07(const fs::path& model, const glm::vec3& eye,
+                                const std::vector<std::string>& extra, bool ibl) {
     std::vector<std::string> args = {
         "--model",
         model.string(),
@@ -53,7 +52,15 @@ Image render07(const fs::path& dir, const fs::path& model, const glm::vec3& eye,
         "--camera",
         std::to_string(eye.x) + "," + std::to_string(eye.y) + "," + std::to_string(eye.z)};
     args.insert(args.end(), extra.begin(), extra.end());
-    const SampleRender render = renderSample(sample, dir / (model.stem().string() + ".png"), args);
+    return args;
+}
+
+// 07 (or 08) on `model` so (args07), headless.
+Image render07(const fs::path& dir, const fs::path& model, const glm::vec3& eye,
+               std::vector<std::string> extra = {},
+               const std::string& sample = "07_gltf_metallic_roughness", bool ibl = false) {
+    const SampleRender render = renderSample(sample, dir / (model.stem().string() + ".png"),
+                                             args07(model, eye, extra, ibl));
     EXPECT_EQ(render.run.exitCode, 0) << render.run.err;
     EXPECT_EQ(render.run.err.find("GL error"), std::string::npos) << render.run.err;
     return readImage(render.image, 3);
@@ -280,6 +287,28 @@ TEST(Reference, Gltf07MaskKeepsTexelsAtOrAboveTheCutoff) {
     EXPECT_GT(dropped, 1500);
 }
 
+// Where compareSpheres looks from: 4 in front of the model's centre, a little above.
+glm::vec3 spheresEye(const Model& model) {
+    return 0.5f * (model.boundsMin + model.boundsMax) + glm::vec3(0.0f, 0.2f, 4.0f);
+}
+
+// `views` of `file` as compareSpheres renders it (`extra` added), in one run (renderViews): the
+// pictures to hand it, by view.
+std::map<std::string, Image> renderSpheresViews(const fs::path& dir, const std::string& sample,
+                                                const fs::path& file,
+                                                const std::vector<std::string>& views,
+                                                const std::vector<std::string>& extra = {},
+                                                bool ibl = false) {
+    const ViewRenders renders =
+        renderViews(sample, views, args07(file, spheresEye(loadModel(file)), extra, ibl), dir);
+    EXPECT_EQ(renders.run.exitCode, 0) << renders.run.err;
+    EXPECT_EQ(renders.run.err.find("GL error"), std::string::npos) << renders.run.err;
+    std::map<std::string, Image> images;
+    for (const auto& [view, path] : renders.images) images[view] = readImage(path, 3);
+    EXPECT_EQ(images.size(), views.size()) << renders.run.out;
+    return images;
+}
+
 // Spheres of one of the project's assets against the CPU: every other pixel whose ray meets a
 // sphere named "<prefix>..." (and not near a triangle's edge), shaded by the CPU from the
 // surface `surfaceOf` gives (nothing: left out) under the file's own lights.
@@ -300,11 +329,11 @@ std::optional<glm::vec3> shadeUnderLights(const cpu::GltfSurface& surface, const
 SphereCheck compareSpheres(const fs::path& dir, const std::string& sample, const fs::path& file,
                            const std::string& prefix, const SurfaceOf& surfaceOf,
                            const std::vector<std::string>& extra = {},
-                           const ShadeSurface& shadeSurface = shadeUnderLights, bool ibl = false) {
+                           const ShadeSurface& shadeSurface = shadeUnderLights, bool ibl = false,
+                           const Image* rendered = nullptr) {
     const Model model = loadModel(file);
-    const glm::vec3 centre = 0.5f * (model.boundsMin + model.boundsMax);
-    const glm::vec3 eye = centre + glm::vec3(0.0f, 0.2f, 4.0f);
-    const Image image = render07(dir, file, eye, extra, sample, ibl);
+    const glm::vec3 eye = spheresEye(model);
+    const Image image = rendered ? *rendered : render07(dir, file, eye, extra, sample, ibl);
     const Rays rays(model, eye);
     const ModelRayCaster caster(model, glm::dmat4(1.0));
     SphereCheck check;
@@ -346,7 +375,7 @@ SphereCheck compareShowcaseSpheres(
     const std::function<bool(const Material&, const Image& mr, float& metallic, float& roughness)>&
         materialOf,
     const std::vector<std::string>& extra = {}, const ShadeSurface& shadeSurface = shadeUnderLights,
-    bool ibl = false) {
+    bool ibl = false, const Image* rendered = nullptr) {
     std::map<std::string, Image> textures;  // each material's, read once (not at every pixel)
     return compareSpheres(
         testOutputDir("reference_07_spheres_" + name), "07_gltf_metallic_roughness",
@@ -366,7 +395,7 @@ SphereCheck compareShowcaseSpheres(
             return cpu::metallicRoughnessSurface(
                 position, normal, glm::vec3(material.baseColorFactor), metallic, roughness);
         },
-        extra, shadeSurface, ibl);
+        extra, shadeSurface, ibl, rendered);
 }
 
 // A solid metallic-roughness texture's values: its first texel; glTF: roughness = factor x G,
@@ -472,12 +501,18 @@ void expectViewCompared(const std::string& label, const SphereCheck& check, int 
 // 07's term views of the inputs and of the punctual lights on the showcase's ten spheres (image-
 // based light off, no tone mapping), every other pixel against the CPU, within 2/255.
 TEST(Reference, Gltf07TermViewsMatchTheCpu) {
-    for (const std::string view :
-         {"base-color", "normal", "metallic", "roughness", "occlusion", "emissive", "f0", "d", "g",
-          "visibility", "f", "specular", "diffuse", "ndotl", "direct"}) {
+    const std::vector<std::string> views = {
+        "base-color", "normal",     "metallic", "roughness", "occlusion", "emissive", "f0",    "d",
+        "g",          "visibility", "f",        "specular",  "diffuse",   "ndotl",    "direct"};
+    std::map<std::string, Image> images =
+        renderSpheresViews(testOutputDir("reference_07_spheres_views"),
+                           "07_gltf_metallic_roughness", modelDir() / "pbr_showcase.gltf", views);
+    for (const std::string& view : views) {
         SCOPED_TRACE("--view " + view);
-        const SphereCheck check = compareShowcaseSpheres("view_" + view, solidTexture,
-                                                         {"--view", view}, punctualViewShade(view));
+        ASSERT_TRUE(images.count(view));
+        const SphereCheck check =
+            compareShowcaseSpheres("view_" + view, solidTexture, {"--view", view},
+                                   punctualViewShade(view), false, &images[view]);
         expectViewCompared("--view " + view, check, 1500, 10);
     }
 }
@@ -519,15 +554,20 @@ TEST(Reference, Gltf07UnlitMaterialsHaveNoLightingTerms) {
 // One punctual light alone (--light K): the showcase's second light by itself, in the summed views
 // and the picture, against the CPU given that light alone.
 TEST(Reference, Gltf07OneLightAlone) {
+    std::map<std::string, Image> images = renderSpheresViews(
+        testOutputDir("reference_07_spheres_light_2"), "07_gltf_metallic_roughness",
+        modelDir() / "pbr_showcase.gltf", {"specular", "direct"}, {"--light", "2"});
     for (const std::string view : {"specular", "direct"}) {
         SCOPED_TRACE("--view " + view);
+        ASSERT_TRUE(images.count(view));
         const SphereCheck check = compareShowcaseSpheres(
             "light_2_" + view, solidTexture, {"--light", "2", "--view", view},
             [&](const cpu::GltfSurface& s, const glm::vec3& eye,
                 std::span<const PunctualLight> lights) -> std::optional<glm::vec3> {
                 if (lights.size() < 2) return std::nullopt;
                 return gltfPunctualView(view, s, eye, lights.subspan(1, 1));
-            });
+            },
+            false, &images[view]);
         expectViewCompared("--light 2 --view " + view, check, 1500, 10);
     }
 }
@@ -542,9 +582,15 @@ TEST(Reference, Gltf07IblTermViewsMatchTheCpu) {
     const std::string hdr = writeLinearSky(dir).string();
     const LinearSkyReads skyReads;
     auto compress = [](const glm::dvec3& x) { return x / (1.0 + x); };
-    for (const std::string view : {"irradiance", "prefiltered", "lut", "ambient-diffuse",
-                                   "ambient-specular", "ambient", "final", "multiple-scattering"}) {
+    const std::vector<std::string> views = {"irradiance",      "prefiltered",        "lut",
+                                            "ambient-diffuse", "ambient-specular",   "ambient",
+                                            "final",           "multiple-scattering"};
+    std::map<std::string, Image> images =
+        renderSpheresViews(dir, "07_gltf_metallic_roughness", modelDir() / "pbr_showcase.gltf",
+                           views, {"--hdr", hdr}, true);
+    for (const std::string& view : views) {
         SCOPED_TRACE("--view " + view);
+        ASSERT_TRUE(images.count(view));
         const SphereCheck check = compareShowcaseSpheres(
             "ibl_view_" + view, solidTexture, {"--hdr", hdr, "--view", view},
             [&](const cpu::GltfSurface& s, const glm::vec3& eye,
@@ -584,7 +630,7 @@ TEST(Reference, Gltf07IblTermViewsMatchTheCpu) {
                 return glm::clamp(glm::mix(a.diffuse + a.dielectricSpecular, a.metal, s.metallic),
                                   0.0f, 1.0f);  // ambient, and the picture: nothing else lights it
             },
-            true);
+            true, &images[view]);
         expectViewCompared("--view " + view, check, 1500, 10);
     }
 }
@@ -665,9 +711,14 @@ TEST(Reference, Gltf08SpecularGlossinessSpheresMatchTheCpu) {
 // extension's conversion (base colour = the diffuse factor; f0 = the specular; roughness =
 // 1 - glossiness; metallic 0) and the sun's terms through 07's BRDF, against the CPU.
 TEST(Reference, Gltf08TermViewsMatchTheCpu) {
-    for (const std::string view :
-         {"base-color", "metallic", "roughness", "f0", "d", "specular", "diffuse", "direct"}) {
+    const std::vector<std::string> views = {"base-color", "metallic", "roughness", "f0",
+                                            "d",          "specular", "diffuse",   "direct"};
+    const fs::path file = modelDir() / "pbr_workflows_sg.gltf";
+    std::map<std::string, Image> images = renderSpheresViews(
+        testOutputDir("reference_08_views"), "08_gltf_specular_glossiness", file, views);
+    for (const std::string& view : views) {
         SCOPED_TRACE("--view " + view);
+        ASSERT_TRUE(images.count(view));
         const SphereCheck check = compareSpheres(
             testOutputDir("reference_08_views_" + view), "08_gltf_specular_glossiness",
             modelDir() / "pbr_workflows_sg.gltf", "sg_",
@@ -681,7 +732,7 @@ TEST(Reference, Gltf08TermViewsMatchTheCpu) {
                 surface.metalColor = glm::vec3(m.baseColorFactor);  // what base-color shows
                 return surface;
             },
-            {"--view", view}, punctualViewShade(view));
+            {"--view", view}, punctualViewShade(view), false, &images[view]);
         expectViewCompared("08 --view " + view, check, 3000, 8);
     }
 }

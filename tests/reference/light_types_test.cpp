@@ -317,17 +317,21 @@ TEST(Reference, LightTypes09TermViewsMatchTheCpu) {
     auto at = [&](int px, int py) -> const ScenePixel& {
         return scene[size_t(py) * kViewWidth + size_t(px)];
     };
-    for (const char* view :
-         {"albedo", "normal", "metallic", "roughness", "ao", "f0", "d", "g", "f", "specular",
-          "diffuse", "ndotl", "direct", "ambient", "final", "attenuation", "cone"}) {
-        SCOPED_TRACE(std::string("--view ") + view);
-        const SampleRender render =
-            renderSample("09_light_types", dir / (std::string(view) + ".png"),
-                         {"--untextured", "--msaa", "0", "--size",
-                          std::to_string(kViewWidth) + "x" + std::to_string(kViewHeight),
-                          "--camera", "0,5.5,12,-90,-22", "--view", view});
-        ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
-        const Image image = readImage(render.image, 3);
+    const std::vector<std::string> views = {
+        "albedo", "normal",  "metallic", "roughness",   "ao",      "f0",
+        "d",      "g",       "f",        "specular",    "diffuse", "ndotl",
+        "direct", "ambient", "final",    "attenuation", "cone"};
+    const ViewRenders renders =
+        renderViews("09_light_types", views,
+                    {"--untextured", "--msaa", "0", "--size",
+                     std::to_string(kViewWidth) + "x" + std::to_string(kViewHeight), "--camera",
+                     "0,5.5,12,-90,-22"},
+                    dir);
+    ASSERT_EQ(renders.run.exitCode, 0) << renders.run.err;
+    for (const std::string& view : views) {
+        SCOPED_TRACE("--view " + view);
+        ASSERT_TRUE(renders.images.count(view)) << renders.run.out;
+        const Image image = readImage(renders.images.at(view), 3);
         ASSERT_EQ(image.width, kViewWidth);
         int compared = 0, onSpheres = 0, aboveTheBox = 0, failed = 0, worst = 0;
         for (int py = 1; py + 1 < kViewHeight; ++py) {
@@ -363,10 +367,10 @@ TEST(Reference, LightTypes09TermViewsMatchTheCpu) {
         std::printf(
             "--view %s: compared %d pixels (%d on the spheres, %d of the right sphere "
             "above the ambient box); worst channel diff %d/255\n",
-            view, compared, onSpheres, aboveTheBox, worst);
+            view.c_str(), compared, onSpheres, aboveTheBox, worst);
         EXPECT_GT(compared, 50000);
         EXPECT_GT(onSpheres, 5000);
-        if (std::string(view) == "ambient") {
+        if (view == "ambient") {
             EXPECT_GT(aboveTheBox, 100);
         }
     }
@@ -384,15 +388,14 @@ TEST(Reference, LightTypes09AmbientViewTakesTheMapsAo) {
     const std::vector<PackedLight> lights =
         light_types::sceneLights(light_types::kPointAttenuation);
     std::map<std::string, Image> views;
-    for (const std::string view : {"albedo", "ao", "ambient"}) {
-        const SampleRender render =
-            renderSample("09_light_types", dir / (view + ".png"),
-                         {"--msaa", "0", "--size",
-                          std::to_string(kViewWidth) + "x" + std::to_string(kViewHeight),
-                          "--camera", "0,5.5,12,-90,-22", "--view", view});
-        ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
-        views[view] = readImage(render.image, 3);
-    }
+    const ViewRenders renders = renderViews(
+        "09_light_types", {"albedo", "ao", "ambient"},
+        {"--msaa", "0", "--size", std::to_string(kViewWidth) + "x" + std::to_string(kViewHeight),
+         "--camera", "0,5.5,12,-90,-22"},
+        dir);
+    ASSERT_EQ(renders.run.exitCode, 0) << renders.run.err;
+    for (const auto& [view, path] : renders.images) views[view] = readImage(path, 3);
+    ASSERT_EQ(views.size(), 3u) << renders.run.out;
     const auto ambientAt = [&](const glm::vec3& position) {
         glm::vec3 ambient(0.0f), L;
         for (const PackedLight& light : lights) {

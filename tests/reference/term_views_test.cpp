@@ -119,21 +119,21 @@ std::optional<cpu::SurfacePoint> constantMaterial(const Hit& hit, int row, int c
     return gridSurface(hit.position, hit.normal, row, col);
 }
 
-// Renders `views` of a grid sample (640 x 360, no MSAA; `args` added) and compares each with
-// gridView on the spheres, where NdotV >= 0.5.
+// Renders `views` of a grid sample (640 x 360, no MSAA; `args` added; one run, renderViews) and
+// compares each with gridView on the spheres, where NdotV >= 0.5.
 void compareViews(const std::string& sample, const std::vector<std::string>& views,
                   const std::vector<std::string>& args, const GridLighting& lighting, double gridZ,
                   const fs::path& dir, const SurfaceAt& surfaceAt = constantMaterial) {
     LinearSkyReads skyReads;
     const GridFrame frame{.width = 640, .height = 360, .gridZ = gridZ};
+    std::vector<std::string> all = {"--msaa", "0", "--size", "640x360"};
+    all.insert(all.end(), args.begin(), args.end());
+    const ViewRenders renders = renderViews(sample, views, all, dir);
+    ASSERT_EQ(renders.run.exitCode, 0) << renders.run.err;
     for (const std::string& view : views) {
         SCOPED_TRACE(sample + " --view " + view);
-        std::vector<std::string> all = {"--msaa", "0", "--size", "640x360", "--view", view};
-        all.insert(all.end(), args.begin(), args.end());
-        fs::create_directories(dir);
-        const SampleRender render = renderSample(sample, dir / (view + ".png"), all);
-        ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
-        const Image image = readImage(render.image, 3);
+        ASSERT_TRUE(renders.images.count(view)) << "no picture\n" << renders.run.out;
+        const Image image = readImage(renders.images.at(view), 3);
         ASSERT_EQ(image.width, frame.width);
         const Comparison result = compareGrid(
             image, [&](double x, double y, int row, int col) -> std::optional<glm::dvec3> {
@@ -240,13 +240,12 @@ TEST(Reference, SplitSum05TexturedIrradianceViewIsAtTheMappedNormal) {
     const LinearSkyReads skyReads;
     const int width = 320, height = 180;
     std::map<std::string, Image> views;
-    for (const std::string view : {"normal", "irradiance"}) {
-        const SampleRender render = renderSample(
-            "05_ibl_specular", dir / (view + ".png"),
-            {"--textured", "--hdr", hdr, "--msaa", "0", "--size", "320x180", "--view", view});
-        ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
-        views[view] = readImage(render.image, 3);
-    }
+    const ViewRenders renders =
+        renderViews("05_ibl_specular", {"normal", "irradiance"},
+                    {"--textured", "--hdr", hdr, "--msaa", "0", "--size", "320x180"}, dir);
+    ASSERT_EQ(renders.run.exitCode, 0) << renders.run.err;
+    for (const auto& [view, image] : renders.images) views[view] = readImage(image, 3);
+    ASSERT_EQ(views.size(), 2u) << renders.run.out;
     // the row of five at z = -2, 2.5 apart, seen from (0, 0, 8) down -Z through 45 degrees
     const glm::dvec3 eye(0.0, 0.0, 8.0);
     const double tanHalf = std::tan(std::numbers::pi / 8.0);

@@ -63,6 +63,33 @@ SampleRender renderSample(const std::string& sample, const fs::path& output,
     return render;
 }
 
+ViewRenders renderViews(const std::string& sample, const std::vector<std::string>& views,
+                        const std::vector<std::string>& args, const fs::path& dir) {
+    fs::create_directories(dir);
+    const fs::path scriptPath = dir / (sample + "_views.script");
+    {
+        std::ofstream script(scriptPath);
+        for (const std::string& view : views) script << "set --view " << view << "\nF12\n";
+    }
+    std::vector<std::string> argv = {sample,     "--headless",
+                                     "--frames", std::to_string(views.size()),
+                                     "--output", (dir / (sample + "_last_view.png")).string()};
+    argv.insert(argv.end(), args.begin(), args.end());
+    ViewRenders renders;
+    renders.run = runSample(
+        argv, {.setEnv = {{"PBR_PANEL_SCRIPT", scriptPath.string()}}, .workingDirectory = dir});
+    if (renders.run.exitCode != 0) return renders;
+    for (size_t i = 0; i < views.size(); ++i) {
+        // frame i's F12 (frames from 0)
+        const fs::path shot = dir / ("screenshot-" + sample + "-" + std::to_string(i) + ".png");
+        const fs::path named = dir / (views[i] + ".png");
+        std::error_code ec;
+        fs::rename(shot, named, ec);
+        if (!ec) renders.images[views[i]] = named;
+    }
+    return renders;
+}
+
 fs::path goldenReportDir() {
     return fs::path(PBR_TEST_OUTPUT_DIR) / "golden-report";
 }
@@ -342,7 +369,8 @@ bool unlikeCorner(const Image& image, int x, int y, int threshold) {
 size_t pixelsUnlikeCorner(const Image& image, int threshold) {
     size_t differing = 0;
     for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) differing += unlikeCorner(image, x, y, threshold) ? 1 : 0;
+        for (int x = 0; x < image.width; ++x)
+            differing += unlikeCorner(image, x, y, threshold) ? 1 : 0;
     }
     return differing;
 }

@@ -5,6 +5,7 @@
 // Goldens change only on purpose: run the golden tests with PBR_UPDATE_GOLDENS=1, look at the new
 // pictures, and say why in the commit.
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,6 +58,18 @@ std::optional<std::string> backendUnavailable(const RunResult& run, const std::s
 // Runs `sample --headless --output <output> <args...>`.
 SampleRender renderSample(const std::string& sample, const std::filesystem::path& output,
                           const std::vector<std::string>& args = {});
+
+// Renders each of `views` (--view words) in one run of `sample --headless <args...>`: a panel
+// script (PBR_PANEL_SCRIPT) sets --view live before each picture and writes it (F12), as the
+// panel would; the LiveFlags tests prove that a view set live draws the very bytes of a run
+// started with it. One run instead of one a view: the sample starts once. The pictures land in
+// `dir` as <view>.png; `images` is empty when the run failed (see `run`).
+struct ViewRenders {
+    RunResult run;
+    std::map<std::string, std::filesystem::path> images;
+};
+ViewRenders renderViews(const std::string& sample, const std::vector<std::string>& views,
+                        const std::vector<std::string>& args, const std::filesystem::path& dir);
 
 // Compares the render with tests/golden/<name>.png and adds it to the golden report. With
 // PBR_UPDATE_GOLDENS=1 it replaces the golden (and its .json metadata) instead and passes.
