@@ -186,13 +186,24 @@ install_gltf_validator() {
     fi
 }
 
-# Runs a stage of the test command and keeps how long it took, for the summary at the end.
+# Runs a stage of the test command and keeps how long it took, for the summary at the end, with
+# how busy the cores were (Linux: /proc/stat's user and system time against all of it; niced
+# work, a fuzzing campaign beside, is not counted): a stage well under 100% has cores to share.
 stage_times=""
+cpu_ticks() {  # prints "BUSY ALL": the machine's CPU time so far, in ticks
+    [ -r /proc/stat ] || { echo "0 0"; return; }
+    local _cpu user nice system idle iowait irq softirq steal _rest
+    read -r _cpu user nice system idle iowait irq softirq steal _rest </proc/stat
+    echo "$((user + system + irq + softirq)) $((user + nice + system + idle + iowait + irq + softirq + steal))"
+}
 timed() {  # timed NAME COMMAND...
-    local name="$1" start=$SECONDS
+    local name="$1" start=$SECONDS busy0 all0 busy1 all1 busy=""
     shift
+    read -r busy0 all0 < <(cpu_ticks)
     "$@"
-    stage_times+=" $name $((SECONDS - start)),"
+    read -r busy1 all1 < <(cpu_ticks)
+    [ "$all1" -le "$all0" ] || busy=" ($((100 * (busy1 - busy0) / (all1 - all0)))% busy)"
+    stage_times+=" $name $((SECONDS - start))$busy,"
 }
 
 build() {  # build PRESET
