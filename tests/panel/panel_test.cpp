@@ -53,7 +53,8 @@ std::string click(const std::string& point) {
     return point + " 2";
 }
 
-const std::vector<std::string> kSize = {"--size", "640x360"};
+// single-sampled: what a panel test checks (the panel, the flags, the camera) shows without it
+const std::vector<std::string> kRunSize = {"--size", "640x360", "--msaa", "0"};
 
 // The frames of a script: a line each, but for the flags' lines ("set", "unset"), which change the
 // next frame (one more after the last).
@@ -82,7 +83,7 @@ PanelRun runScripted(const std::string& sample, const std::vector<std::string>& 
     std::vector<std::string> argv = {sample,     "--headless",
                                      "--frames", std::to_string(framesOf(script) + 1),
                                      "--output", result.image.string()};
-    argv.insert(argv.end(), kSize.begin(), kSize.end());
+    argv.insert(argv.end(), kRunSize.begin(), kRunSize.end());
     argv.insert(argv.end(), args.begin(), args.end());
     // (in `dir`: an F12 line writes its picture there)
     result.run = runSample(
