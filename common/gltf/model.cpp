@@ -87,12 +87,11 @@ GpuModel::GpuModel(const Model& model) {
         samplers_.emplace(key, std::move(sampler));
     };
     for (const Material& m : model.materials) {
-        upload(m.baseColorTexture, ColorSpace::Srgb);
-        upload(m.emissiveTexture, ColorSpace::Srgb);
-        upload(m.specularGlossinessTexture, ColorSpace::Srgb);
-        upload(m.metallicRoughnessTexture, ColorSpace::Linear);
-        upload(m.normalTexture, ColorSpace::Linear);
-        upload(m.occlusionTexture, ColorSpace::Linear);
+        const auto slots = m.textures();
+        for (size_t slot = 0; slot < slots.size(); ++slot) {
+            upload(*slots[slot],
+                   Material::isSrgbSlot(slot) ? ColorSpace::Srgb : ColorSpace::Linear);
+        }
     }
     for (const ModelPrimitive& p : model.primitives) {
         glm::vec3 low(INFINITY), high(-INFINITY);

@@ -3,6 +3,7 @@
 // primitive's material read into one plain struct. Model is pure data (no GL); GpuModel uploads
 // it. Drawing policy (which shader, which inputs) is the sample's.
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -42,6 +43,41 @@ struct TextureRef {
 
 enum class AlphaMode { Opaque, Mask, Blend };
 
+// The KHR_materials_* extensions of sample 10, each with its specification's defaults, which are
+// also what a material without the extension is: no coat, no sheen, opaque, IOR 1.5, the core
+// specular reflectance, emission as the factor says. Texture channels as the specifications
+// assign them.
+struct Clearcoat {  // KHR_materials_clearcoat
+    float factor = 0.0f;
+    TextureRef texture;  // R
+    float roughnessFactor = 0.0f;
+    TextureRef roughnessTexture;  // G
+    TextureRef normalTexture;
+    float normalScale = 1.0f;
+};
+struct Sheen {  // KHR_materials_sheen
+    glm::vec3 colorFactor{0.0f};
+    TextureRef colorTexture;  // RGB, sRGB
+    float roughnessFactor = 0.0f;
+    TextureRef roughnessTexture;  // A
+};
+struct Transmission {  // KHR_materials_transmission
+    float factor = 0.0f;
+    TextureRef texture;  // R
+};
+struct Volume {  // KHR_materials_volume
+    float thicknessFactor = 0.0f;
+    TextureRef thicknessTexture;           // G
+    float attenuationDistance = INFINITY;  // no attenuation
+    glm::vec3 attenuationColor{1.0f};      // linear
+};
+struct SpecularLayer {  // KHR_materials_specular (not the specular-glossiness workflow's)
+    float factor = 1.0f;
+    TextureRef texture;  // A
+    glm::vec3 colorFactor{1.0f};
+    TextureRef colorTexture;  // RGB, sRGB
+};
+
 // A glTF 2.0 material as the samples use it, with the spec's defaults.
 struct Material {
     std::string name;
@@ -63,6 +99,18 @@ struct Material {
     glm::vec3 specularFactor{1.0f};
     float glossinessFactor = 1.0f;
     TextureRef specularGlossinessTexture;  // RGB = specular (sRGB), A = glossiness
+    // KHR_materials_clearcoat, _sheen, _transmission, _volume, _ior, _specular and
+    // _emissive_strength (sample 10 draws them; 07 and 08 draw the core material alone)
+    Clearcoat clearcoat;
+    Sheen sheen;
+    Transmission transmission;
+    Volume volume;
+    float ior = 1.5f;
+    SpecularLayer khrSpecular;
+    float emissiveStrength = 1.0f;
+    // The extensions the material's own "extensions" object names (glTF only), in the file's
+    // order: what a renderer checks before it says it draws them all.
+    std::vector<std::string> extensions;
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     bool doubleSided = false;
@@ -70,17 +118,45 @@ struct Material {
     // white, fully metallic, fully rough surface), no textures.
     bool gltfDefault = false;
 
-    // Its texture slots, in a fixed order (the model pack's), and their names in glTF.
-    static constexpr std::array<const char*, 6> kTextureNames = {
-        "baseColorTexture", "metallicRoughnessTexture", "normalTexture",
-        "occlusionTexture", "emissiveTexture",          "specularGlossinessTexture"};
-    std::array<TextureRef*, 6> textures() {
-        return {&baseColorTexture, &metallicRoughnessTexture, &normalTexture,
-                &occlusionTexture, &emissiveTexture,          &specularGlossinessTexture};
+    // Its texture slots, in a fixed order (the model pack's), and their names in glTF (an
+    // extension's as "<extension>.<name>").
+    static constexpr size_t kTextureCount = 15;
+    static constexpr std::array<const char*, kTextureCount> kTextureNames = {
+        "baseColorTexture",
+        "metallicRoughnessTexture",
+        "normalTexture",
+        "occlusionTexture",
+        "emissiveTexture",
+        "specularGlossinessTexture",
+        "KHR_materials_clearcoat.clearcoatTexture",
+        "KHR_materials_clearcoat.clearcoatRoughnessTexture",
+        "KHR_materials_clearcoat.clearcoatNormalTexture",
+        "KHR_materials_sheen.sheenColorTexture",
+        "KHR_materials_sheen.sheenRoughnessTexture",
+        "KHR_materials_transmission.transmissionTexture",
+        "KHR_materials_volume.thicknessTexture",
+        "KHR_materials_specular.specularTexture",
+        "KHR_materials_specular.specularColorTexture"};
+    std::array<TextureRef*, kTextureCount> textures() {
+        return {&baseColorTexture,        &metallicRoughnessTexture,
+                &normalTexture,           &occlusionTexture,
+                &emissiveTexture,         &specularGlossinessTexture,
+                &clearcoat.texture,       &clearcoat.roughnessTexture,
+                &clearcoat.normalTexture, &sheen.colorTexture,
+                &sheen.roughnessTexture,  &transmission.texture,
+                &volume.thicknessTexture, &khrSpecular.texture,
+                &khrSpecular.colorTexture};
     }
-    std::array<const TextureRef*, 6> textures() const {
-        return {&baseColorTexture, &metallicRoughnessTexture, &normalTexture,
-                &occlusionTexture, &emissiveTexture,          &specularGlossinessTexture};
+    std::array<const TextureRef*, kTextureCount> textures() const {
+        const auto slots = const_cast<Material*>(this)->textures();
+        std::array<const TextureRef*, kTextureCount> out{};
+        for (size_t i = 0; i < kTextureCount; ++i) out[i] = slots[i];
+        return out;
+    }
+    // Whether a texture slot holds colour (sRGB): base colour, emissive, specular-glossiness,
+    // sheen colour and specular colour.
+    static constexpr bool isSrgbSlot(size_t slot) {
+        return slot == 0 || slot == 4 || slot == 5 || slot == 9 || slot == 14;
     }
 };
 
@@ -145,8 +221,8 @@ public:
         glm::vec3 centre;  // of the mesh's bounds, in its own space (for sorting)
     };
     const std::vector<Primitive>& primitives() const { return primitives_; }
-    // The texture for a reference, or nullptr when absent. Base colour, emissive and
-    // specular-glossiness textures are sRGB, the others linear.
+    // The texture for a reference, or nullptr when absent. The colour slots (Material::isSrgbSlot)
+    // are sRGB, the others linear.
     const Texture2D* texture(const TextureRef& ref, ColorSpace colorSpace) const;
     // Binds a reference's texture to `unit` with a sampler object for its glTF sampler (wrap
     // and filters; the renderer's choice, trilinear, where the file leaves a filter open), or

@@ -37,16 +37,18 @@ struct Reader {
     Model& model;
     std::string where;  // "<file>: "
 
-    TextureRef texture(const aiMaterial* material, aiTextureType type) {
+    // The texture `index` of a type (Assimp keeps an extension's several textures under one
+    // type: AI_MATKEY_CLEARCOAT_ROUGHNESS_TEXTURE is aiTextureType_CLEARCOAT, 1).
+    TextureRef texture(const aiMaterial* material, aiTextureType type, unsigned index = 0) {
         TextureRef ref;
         aiString path;
         unsigned uvIndex = 0;
-        if (material->GetTextureCount(type) == 0 ||
-            material->GetTexture(type, 0, &path, nullptr, &uvIndex) != AI_SUCCESS) {
+        if (material->GetTextureCount(type) <= index ||
+            material->GetTexture(type, index, &path, nullptr, &uvIndex) != AI_SUCCESS) {
             return ref;
         }
         ref.uvSet = int(uvIndex);
-        readSampler(material, type, ref);
+        readSampler(material, type, index, ref);
         const std::string name = path.C_Str();
         if (!name.empty() && name[0] == '*') {
             const int index = std::atoi(name.c_str() + 1);
@@ -73,22 +75,23 @@ struct Reader {
 
     // The glTF sampler and KHR_texture_transform of a texture, as Assimp 5.2 reports them (see
     // DESIGN.md, "glTF through Assimp 5.2").
-    static void readSampler(const aiMaterial* material, aiTextureType type, TextureRef& ref) {
+    static void readSampler(const aiMaterial* material, aiTextureType type, unsigned index,
+                            TextureRef& ref) {
         auto wrap = [](int mode) {
             return mode == aiTextureMapMode_Clamp    ? 33071
                    : mode == aiTextureMapMode_Mirror ? 33648
                                                      : 10497;
         };
         int mode = aiTextureMapMode_Wrap;
-        if (material->Get(AI_MATKEY_MAPPINGMODE_U(type, 0), mode) == AI_SUCCESS)
+        if (material->Get(AI_MATKEY_MAPPINGMODE_U(type, index), mode) == AI_SUCCESS)
             ref.wrapS = wrap(mode);
         mode = aiTextureMapMode_Wrap;
-        if (material->Get(AI_MATKEY_MAPPINGMODE_V(type, 0), mode) == AI_SUCCESS)
+        if (material->Get(AI_MATKEY_MAPPINGMODE_V(type, index), mode) == AI_SUCCESS)
             ref.wrapT = wrap(mode);
-        material->Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, 0), ref.magFilter);
-        material->Get(AI_MATKEY_GLTF_MAPPINGFILTER_MIN(type, 0), ref.minFilter);
+        material->Get(AI_MATKEY_GLTF_MAPPINGFILTER_MAG(type, index), ref.magFilter);
+        material->Get(AI_MATKEY_GLTF_MAPPINGFILTER_MIN(type, index), ref.minFilter);
         aiUVTransform uv;
-        if (material->Get(AI_MATKEY_UVTRANSFORM(type, 0), uv) == AI_SUCCESS) {
+        if (material->Get(AI_MATKEY_UVTRANSFORM(type, index), uv) == AI_SUCCESS) {
             // Assimp turns the extension's offset, rotation and scale into its own convention
             // (rotation negated, about the image centre, for its flipped v); undo that to get
             // glTF's values back. Measured on Assimp 5.2: with R the glTF rotation,
@@ -153,9 +156,36 @@ struct Reader {
                                               : AlphaMode::Opaque;
         }
         m->Get(AI_MATKEY_GLTF_ALPHACUTOFF, out.alphaCutoff);
+        readExtensions(m, out);
         int twoSided = 0;
         if (m->Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS) out.doubleSided = twoSided != 0;
         return out;
+    }
+
+    // The KHR_materials_* that Assimp 5.2.5 reads (clearcoat, sheen, transmission, volume, ior);
+    // _specular and _emissive_strength it drops, and readWhatAssimpDrops reads them.
+    void readExtensions(const aiMaterial* m, Material& out) {
+        m->Get(AI_MATKEY_CLEARCOAT_FACTOR, out.clearcoat.factor);
+        m->Get(AI_MATKEY_CLEARCOAT_ROUGHNESS_FACTOR, out.clearcoat.roughnessFactor);
+        out.clearcoat.texture = texture(m, AI_MATKEY_CLEARCOAT_TEXTURE);
+        out.clearcoat.roughnessTexture = texture(m, AI_MATKEY_CLEARCOAT_ROUGHNESS_TEXTURE);
+        out.clearcoat.normalTexture = texture(m, AI_MATKEY_CLEARCOAT_NORMAL_TEXTURE);
+        m->Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_CLEARCOAT, 2), out.clearcoat.normalScale);
+        aiColor4D sheen;
+        if (m->Get(AI_MATKEY_SHEEN_COLOR_FACTOR, sheen) == AI_SUCCESS)
+            out.sheen.colorFactor = {sheen.r, sheen.g, sheen.b};
+        m->Get(AI_MATKEY_SHEEN_ROUGHNESS_FACTOR, out.sheen.roughnessFactor);
+        out.sheen.colorTexture = texture(m, AI_MATKEY_SHEEN_COLOR_TEXTURE);
+        out.sheen.roughnessTexture = texture(m, AI_MATKEY_SHEEN_ROUGHNESS_TEXTURE);
+        m->Get(AI_MATKEY_TRANSMISSION_FACTOR, out.transmission.factor);
+        out.transmission.texture = texture(m, AI_MATKEY_TRANSMISSION_TEXTURE);
+        m->Get(AI_MATKEY_VOLUME_THICKNESS_FACTOR, out.volume.thicknessFactor);
+        out.volume.thicknessTexture = texture(m, AI_MATKEY_VOLUME_THICKNESS_TEXTURE);
+        m->Get(AI_MATKEY_VOLUME_ATTENUATION_DISTANCE, out.volume.attenuationDistance);
+        aiColor4D attenuation;
+        if (m->Get(AI_MATKEY_VOLUME_ATTENUATION_COLOR, attenuation) == AI_SUCCESS)
+            out.volume.attenuationColor = {attenuation.r, attenuation.g, attenuation.b};
+        m->Get(AI_MATKEY_REFRACTI, out.ior);
     }
 
     MeshData mesh(const aiMesh* in) {
@@ -339,26 +369,123 @@ std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& w
     return lights;
 }
 
-// KHR_texture_transform's texCoord, which Assimp 5.2 drops: it overrides the textureInfo's
-// texture coordinate set. Assimp's materials are matched with the file's by the order it reads
-// them in (assimpMaterialOrder), checked against their names; where they do not match, the
-// overrides are left out, saying so.
-// Whether a JSON value holds a KHR_texture_transform that sets texCoord.
-bool setsTexCoord(const JsonValue& value) {
+// What Assimp 5.2.5 drops of a glTF material, read from the file's JSON: KHR_texture_transform's
+// texCoord (it overrides the textureInfo's texture coordinate set), KHR_materials_specular and
+// KHR_materials_emissive_strength, and the names in each material's "extensions". Assimp's
+// materials are matched with the file's by the order it reads them in (assimpMaterialOrder),
+// checked against their names; where they do not match, these are left out, saying so.
+
+// A JSON number, or nullopt when the value is absent or not a finite number.
+std::optional<float> jsonNumber(const JsonValue* value) {
+    if (!value || value->type != JsonValue::Type::Number || !std::isfinite(value->number))
+        return std::nullopt;
+    return float(value->number);
+}
+std::optional<glm::vec3> jsonVec3(const JsonValue* value) {
+    if (!value || value->type != JsonValue::Type::Array || value->items.size() != 3)
+        return std::nullopt;
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i) {
+        const auto number = jsonNumber(&value->items[size_t(i)]);
+        if (!number) return std::nullopt;
+        out[i] = *number;
+    }
+    return out;
+}
+// A glTF index: a whole number from 0, or -1.
+int jsonIndex(const JsonValue* value) {
+    const auto number = jsonNumber(value);
+    if (!number || *number < 0.0f || *number != std::floor(*number) || *number > 1e9f) return -1;
+    return int(*number);
+}
+const JsonValue* jsonItem(const JsonValue& document, std::string_view list, int index) {
+    const JsonValue* items = document.find(list);
+    if (!items || index < 0 || size_t(index) >= items->items.size()) return nullptr;
+    return &items->items[size_t(index)];
+}
+
+// The TextureRef of a textureInfo that Assimp did not read, as Assimp would have made it: an
+// image with its bytes inside the file (a buffer view, a data: URI) is embedded image N, N
+// counting the file's images with bytes inside it before it (Assimp numbers them so); any other
+// is a file beside the model.
+TextureRef jsonTexture(const JsonValue& document, const JsonValue& textureInfo, const Model& model,
+                       const std::string& what) {
+    TextureRef ref;
+    const int index = jsonIndex(textureInfo.find("index"));
+    const JsonValue* texture = jsonItem(document, "textures", index);
+    if (!texture) throw Error(what + " names a texture the file does not have");
+    const int source = jsonIndex(texture->find("source"));
+    const JsonValue* image = jsonItem(document, "images", source);
+    if (!image) throw Error(what + " names an image the file does not have");
+    auto inside = [](const JsonValue& candidate) {
+        const JsonValue* uri = candidate.find("uri");
+        return !uri || uri->type != JsonValue::Type::String || uri->text.starts_with("data:");
+    };
+    if (inside(*image)) {
+        ref.embedded = 0;
+        for (int i = 0; i < source; ++i) ref.embedded += inside(*jsonItem(document, "images", i));
+        if (ref.embedded >= int(model.embeddedImages.size()))
+            throw Error(what + ": its image is not in the file");
+    } else {
+        ref.file = model.file.parent_path() / image->find("uri")->text;
+        std::error_code ec;
+        if (!fs::is_regular_file(ref.file, ec)) {
+            throw Error(what + ": texture '" + printable(image->find("uri")->text) +
+                        "' not found (" + printable(displayPath(ref.file)) + ")");
+        }
+    }
+    ref.uvSet = std::max(jsonIndex(textureInfo.find("texCoord")), 0);
+    if (const JsonValue* sampler =
+            jsonItem(document, "samplers", jsonIndex(texture->find("sampler")))) {
+        auto number = [&](const char* name, int fallback) {
+            const int value = jsonIndex(sampler->find(name));
+            return value < 0 ? fallback : value;
+        };
+        ref.wrapS = number("wrapS", 10497);
+        ref.wrapT = number("wrapT", 10497);
+        ref.magFilter = number("magFilter", 0);
+        ref.minFilter = number("minFilter", 0);
+    }
+    const JsonValue* extensions = textureInfo.find("extensions");
+    if (const JsonValue* transform =
+            extensions ? extensions->find("KHR_texture_transform") : nullptr) {
+        const JsonValue* offset = transform->find("offset");
+        const JsonValue* scale = transform->find("scale");
+        auto vec2 = [](const JsonValue* value, glm::vec2 fallback) {
+            if (!value || value->items.size() != 2) return fallback;
+            const auto x = jsonNumber(&value->items[0]), y = jsonNumber(&value->items[1]);
+            return x && y ? glm::vec2(*x, *y) : fallback;
+        };
+        ref.transform = textureTransform(vec2(offset, glm::vec2(0.0f)),
+                                         jsonNumber(transform->find("rotation")).value_or(0.0f),
+                                         vec2(scale, glm::vec2(1.0f)));
+    }
+    return ref;
+}
+
+// Whether a JSON value holds what Assimp drops: a KHR_texture_transform that sets texCoord,
+// KHR_materials_specular or KHR_materials_emissive_strength.
+bool holdsWhatAssimpDrops(const JsonValue& value) {
     for (const auto& [name, member] : value.members) {
-        if ((name == "KHR_texture_transform" && member.find("texCoord")) || setsTexCoord(member))
+        if ((name == "KHR_texture_transform" && member.find("texCoord")) ||
+            name == "KHR_materials_specular" || name == "KHR_materials_emissive_strength" ||
+            holdsWhatAssimpDrops(member))
             return true;
     }
     for (const JsonValue& item : value.items) {
-        if (setsTexCoord(item)) return true;
+        if (holdsWhatAssimpDrops(item)) return true;
     }
     return false;
 }
 
-void applyTexCoordOverrides(const JsonValue& document, std::vector<Material>& materials,
-                            std::vector<std::string>& notes) {
+void readWhatAssimpDrops(const JsonValue& document, Model& model, const std::string& where) {
+    std::vector<Material>& materials = model.materials;
     const JsonValue* list = document.find("materials");
-    if (!list || materials.empty() || !setsTexCoord(*list)) return;
+    if (!list || materials.empty()) return;
+    const bool drops = holdsWhatAssimpDrops(*list);
+    const bool named = std::any_of(list->items.begin(), list->items.end(),
+                                   [](const JsonValue& m) { return m.find("extensions"); });
+    if (!drops && !named) return;
     const std::vector<int> order = assimpMaterialOrder(document);
     auto nameOf = [&](int index) {
         const JsonValue* name = list->items[size_t(index)].find("name");
@@ -369,22 +496,28 @@ void applyTexCoordOverrides(const JsonValue& document, std::vector<Material>& ma
     for (size_t i = 0; matched && i < order.size(); ++i)
         matched = nameOf(order[i]) == materials[i].name;
     if (!matched) {
-        notes.push_back(
-            "the file's materials could not be matched with Assimp's; KHR_texture_transform's "
-            "texCoord is ignored");
+        // (where only the extensions' names were wanted, nothing drawn is lost: no note)
+        if (drops) {
+            model.notes.push_back(
+                "the file's materials could not be matched with Assimp's; KHR_texture_transform's "
+                "texCoord, KHR_materials_specular and KHR_materials_emissive_strength are ignored");
+        }
         return;
     }
     for (size_t i = 0; i < order.size(); ++i) {
         const JsonValue& in = list->items[size_t(order[i])];
         Material& out = materials[i];
+        const std::string what = where + "material '" + printable(out.name) + "'";
         auto apply = [](const JsonValue* textureInfo, TextureRef& ref) {
             if (!textureInfo || !ref.present()) return;
             if (const auto set = texCoordOverride(*textureInfo)) ref.uvSet = *set;
         };
         const JsonValue* pbr = in.find("pbrMetallicRoughness");
         const JsonValue* extensions = in.find("extensions");
-        const JsonValue* specGloss =
-            extensions ? extensions->find("KHR_materials_pbrSpecularGlossiness") : nullptr;
+        auto extension = [&](const char* name) {
+            return extensions ? extensions->find(name) : nullptr;
+        };
+        const JsonValue* specGloss = extension("KHR_materials_pbrSpecularGlossiness");
         if (out.specularGlossiness) {
             apply(specGloss ? specGloss->find("diffuseTexture") : nullptr, out.baseColorTexture);
             apply(specGloss ? specGloss->find("specularGlossinessTexture") : nullptr,
@@ -397,6 +530,43 @@ void applyTexCoordOverrides(const JsonValue& document, std::vector<Material>& ma
         apply(in.find("normalTexture"), out.normalTexture);
         apply(in.find("occlusionTexture"), out.occlusionTexture);
         apply(in.find("emissiveTexture"), out.emissiveTexture);
+        if (const JsonValue* coat = extension("KHR_materials_clearcoat")) {
+            apply(coat->find("clearcoatTexture"), out.clearcoat.texture);
+            apply(coat->find("clearcoatRoughnessTexture"), out.clearcoat.roughnessTexture);
+            apply(coat->find("clearcoatNormalTexture"), out.clearcoat.normalTexture);
+        }
+        if (const JsonValue* sheen = extension("KHR_materials_sheen")) {
+            apply(sheen->find("sheenColorTexture"), out.sheen.colorTexture);
+            apply(sheen->find("sheenRoughnessTexture"), out.sheen.roughnessTexture);
+        }
+        if (const JsonValue* transmission = extension("KHR_materials_transmission"))
+            apply(transmission->find("transmissionTexture"), out.transmission.texture);
+        if (const JsonValue* volume = extension("KHR_materials_volume"))
+            apply(volume->find("thicknessTexture"), out.volume.thicknessTexture);
+        // KHR_materials_specular: all of it (Assimp 5.2.5 has no key for it)
+        if (const JsonValue* specular = extension("KHR_materials_specular")) {
+            out.khrSpecular.factor =
+                jsonNumber(specular->find("specularFactor")).value_or(out.khrSpecular.factor);
+            out.khrSpecular.colorFactor = jsonVec3(specular->find("specularColorFactor"))
+                                              .value_or(out.khrSpecular.colorFactor);
+            if (const JsonValue* texture = specular->find("specularTexture")) {
+                out.khrSpecular.texture = jsonTexture(
+                    document, *texture, model, what + ": KHR_materials_specular's specularTexture");
+            }
+            if (const JsonValue* texture = specular->find("specularColorTexture")) {
+                out.khrSpecular.colorTexture =
+                    jsonTexture(document, *texture, model,
+                                what + ": KHR_materials_specular's specularColorTexture");
+            }
+        }
+        // KHR_materials_emissive_strength (Assimp 5.2.5 reads none of it)
+        if (const JsonValue* strength = extension("KHR_materials_emissive_strength")) {
+            out.emissiveStrength =
+                jsonNumber(strength->find("emissiveStrength")).value_or(out.emissiveStrength);
+        }
+        if (extensions) {
+            for (const auto& [name, member] : extensions->members) out.extensions.push_back(name);
+        }
     }
 }
 
@@ -509,7 +679,7 @@ Model loadModel(const fs::path& file) {
     if (isGltf && !model.materials.empty() && model.materials.back().name.empty()) {
         model.materials.back().gltfDefault = true;
     }
-    if (document) applyTexCoordOverrides(*document, model.materials, model.notes);
+    if (document) readWhatAssimpDrops(*document, model, where);
     // The samples (their shaders, the pages' packs) read TEXCOORD_0 and TEXCOORD_1, as the
     // Khronos viewer does.
     for (Material& material : model.materials) {

@@ -17,7 +17,7 @@ namespace {
 
 constexpr char kMagic[8] = {'P', 'B', 'R', 'M', 'O', 'D', 'E', 'L'};
 // Raise it whenever the layout below changes: a page never reads a pack of another layout.
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;
 
 // Little-endian on every machine the suite builds for (x86-64, arm64, wasm32): the values are
 // copied as they lie in memory.
@@ -187,6 +187,20 @@ std::string encodeModelPack(const Model& model) {
         out.value(m.glossinessFactor);
         out.u32(std::uint64_t(m.alphaMode));
         out.value(m.alphaCutoff);
+        out.value(m.clearcoat.factor);
+        out.value(m.clearcoat.roughnessFactor);
+        out.value(m.clearcoat.normalScale);
+        out.value(m.sheen.colorFactor);
+        out.value(m.sheen.roughnessFactor);
+        out.value(m.transmission.factor);
+        out.value(m.volume.thicknessFactor);
+        out.value(m.volume.attenuationDistance);
+        out.value(m.volume.attenuationColor);
+        out.value(m.ior);
+        out.value(m.khrSpecular.factor);
+        out.value(m.khrSpecular.colorFactor);
+        out.value(m.emissiveStrength);
+        out.texts(m.extensions);
     }
     out.u32(model.primitives.size());
     for (const ModelPrimitive& p : model.primitives) {
@@ -277,6 +291,20 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
         if (alphaMode > 2) in.fail("unknown alpha mode");
         m.alphaMode = AlphaMode(alphaMode);
         m.alphaCutoff = in.value<float>();
+        m.clearcoat.factor = in.value<float>();
+        m.clearcoat.roughnessFactor = in.value<float>();
+        m.clearcoat.normalScale = in.value<float>();
+        m.sheen.colorFactor = in.value<glm::vec3>();
+        m.sheen.roughnessFactor = in.value<float>();
+        m.transmission.factor = in.value<float>();
+        m.volume.thicknessFactor = in.value<float>();
+        m.volume.attenuationDistance = in.value<float>();
+        m.volume.attenuationColor = in.value<glm::vec3>();
+        m.ior = in.value<float>();
+        m.khrSpecular.factor = in.value<float>();
+        m.khrSpecular.colorFactor = in.value<glm::vec3>();
+        m.emissiveStrength = in.value<float>();
+        m.extensions = in.texts();
     }
     model.primitives.resize(in.count(4));
     for (ModelPrimitive& p : model.primitives) {

@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <vector>
 
-namespace pbr::test {
+#include "files/image.h"
 
-namespace {
+namespace pbr::test {
 
 std::string base64(const std::vector<std::uint8_t>& bytes) {
     static const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -27,6 +27,8 @@ std::string base64(const std::vector<std::uint8_t>& bytes) {
     }
     return out;
 }
+
+namespace {
 
 template <class T>
 void append(std::vector<std::uint8_t>& bytes, std::initializer_list<T> values) {
@@ -209,6 +211,43 @@ std::string jsonText(const JsonValue& value) {
         }
     }
     return "null";
+}
+
+std::filesystem::path writeMaterialExtensionsFile(const std::filesystem::path& dir) {
+    writePng(dir / "a.png", pbr::Image{1, 1, 4, {10, 20, 30, 40}});
+    const std::string png = encodePng(pbr::Image{1, 1, 4, {50, 60, 70, 80}});
+    const std::string inside =
+        "data:image/png;base64," + base64(std::vector<std::uint8_t>(png.begin(), png.end()));
+    return writeTextFile(dir, "extensions.gltf",
+                         R"({"asset":{"version":"2.0"},
+"extensionsUsed":["KHR_materials_clearcoat","KHR_materials_sheen","KHR_materials_transmission",
+  "KHR_materials_volume","KHR_materials_ior","KHR_materials_specular",
+  "KHR_materials_emissive_strength","KHR_texture_transform"],
+)" + squareBuffersJson(1.0f) +
+                             R"(
+"images":[{"uri":"a.png"},{"uri":")" +
+                             inside + R"("}],
+"samplers":[{"wrapS":33071,"wrapT":33648,"magFilter":9728,"minFilter":9984}],
+"textures":[{"source":0},{"source":1,"sampler":0}],
+"materials":[{"name":"layers","emissiveFactor":[1,0.5,0.25],
+  "extensions":{
+    "KHR_materials_clearcoat":{"clearcoatFactor":0.7,"clearcoatTexture":{"index":0},
+      "clearcoatRoughnessFactor":0.3,"clearcoatRoughnessTexture":{"index":1,"texCoord":1},
+      "clearcoatNormalTexture":{"index":0,"scale":0.6}},
+    "KHR_materials_sheen":{"sheenColorFactor":[0.1,0.2,0.3],"sheenColorTexture":{"index":1},
+      "sheenRoughnessFactor":0.4,"sheenRoughnessTexture":{"index":0}},
+    "KHR_materials_transmission":{"transmissionFactor":0.8,"transmissionTexture":{"index":0}},
+    "KHR_materials_volume":{"thicknessFactor":0.5,"thicknessTexture":{"index":1},
+      "attenuationDistance":2.5,"attenuationColor":[0.9,0.8,0.7]},
+    "KHR_materials_ior":{"ior":1.7},
+    "KHR_materials_specular":{"specularFactor":0.6,"specularTexture":{"index":0,"texCoord":1},
+      "specularColorFactor":[0.5,0.6,0.7],"specularColorTexture":{"index":1,"extensions":{
+        "KHR_texture_transform":{"offset":[0.25,0.5],"scale":[2,4]}}}},
+    "KHR_materials_emissive_strength":{"emissiveStrength":5}}},
+  {"name":"plain"}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) +
+                             "," + squarePrimitiveJson(1) + R"(]}],
+"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})");
 }
 
 }  // namespace pbr::test

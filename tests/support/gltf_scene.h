@@ -24,6 +24,15 @@ std::string squareBuffersJson(float halfSize);
 // The attributes object of a primitive drawing the square: {"POSITION":0,...}, "indices":4.
 std::string squarePrimitiveJson(int material);
 
+// Writes dir/extensions.gltf (with dir/a.png): the square twice, material "layers" using every
+// extension sample 10 draws (clearcoat, sheen, transmission, volume, ior, specular, emissive
+// strength) with a texture in each slot, half of them an image inside the file (a data: URI),
+// and material "plain" using none. Returns its path.
+std::filesystem::path writeMaterialExtensionsFile(const std::filesystem::path& dir);
+
+// The bytes in base64 (RFC 4648, padded), as a data: URI holds them.
+std::string base64(const std::vector<std::uint8_t>& bytes);
+
 // Writes `json` to dir/name and returns the path.
 std::filesystem::path writeTextFile(const std::filesystem::path& dir, const std::string& name,
                                     const std::string& json);

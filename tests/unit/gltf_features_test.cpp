@@ -372,6 +372,106 @@ TEST(GltfFeatures, SpecularGlossinessFactorsAndTexturesAreRead) {
     EXPECT_FALSE(mr->specularGlossinessTexture.present());
 }
 
+// Sample 10's material extensions: clearcoat, sheen, transmission, volume and IOR through Assimp,
+// KHR_materials_specular and _emissive_strength from the file's JSON (Assimp 5.2.5 drops both),
+// each texture with its sampler, texCoord and KHR_texture_transform; an image inside the file
+// (a data: URI) is the embedded image Assimp numbers it. The expected values are the JSON's.
+TEST(GltfFeatures, MaterialExtensionsAreRead) {
+    const Model model =
+        loadModel(writeMaterialExtensionsFile(testOutputDir("gltf_features_material_extensions")));
+    const Material* layers = nullptr;
+    const Material* plain = nullptr;
+    for (const Material& m : model.materials) {
+        if (m.name == "layers") layers = &m;
+        if (m.name == "plain") plain = &m;
+    }
+    ASSERT_TRUE(layers && plain);
+    ASSERT_EQ(model.embeddedImages.size(), 1u);  // the data: URI's
+    auto isFile = [](const TextureRef& ref) { return ref.file.filename() == "a.png"; };
+    auto isInside = [](const TextureRef& ref) { return ref.file.empty() && ref.embedded == 0; };
+
+    EXPECT_FLOAT_EQ(layers->clearcoat.factor, 0.7f);
+    EXPECT_FLOAT_EQ(layers->clearcoat.roughnessFactor, 0.3f);
+    EXPECT_TRUE(isFile(layers->clearcoat.texture));
+    EXPECT_TRUE(isInside(layers->clearcoat.roughnessTexture));
+    EXPECT_EQ(layers->clearcoat.roughnessTexture.uvSet, 1);
+    EXPECT_EQ(layers->clearcoat.roughnessTexture.wrapS, 33071);
+    EXPECT_EQ(layers->clearcoat.roughnessTexture.minFilter, 9984);
+    EXPECT_TRUE(isFile(layers->clearcoat.normalTexture));
+    EXPECT_FLOAT_EQ(layers->clearcoat.normalScale, 0.6f);
+
+    expectNear(layers->sheen.colorFactor, {0.1f, 0.2f, 0.3f}, 1e-6f);
+    EXPECT_FLOAT_EQ(layers->sheen.roughnessFactor, 0.4f);
+    EXPECT_TRUE(isInside(layers->sheen.colorTexture));
+    EXPECT_TRUE(isFile(layers->sheen.roughnessTexture));
+
+    EXPECT_FLOAT_EQ(layers->transmission.factor, 0.8f);
+    EXPECT_TRUE(isFile(layers->transmission.texture));
+    EXPECT_FLOAT_EQ(layers->volume.thicknessFactor, 0.5f);
+    EXPECT_TRUE(isInside(layers->volume.thicknessTexture));
+    EXPECT_FLOAT_EQ(layers->volume.attenuationDistance, 2.5f);
+    expectNear(layers->volume.attenuationColor, {0.9f, 0.8f, 0.7f}, 1e-6f);
+    EXPECT_FLOAT_EQ(layers->ior, 1.7f);
+
+    // KHR_materials_specular, from the JSON, with what Assimp would have read for such textures
+    EXPECT_FLOAT_EQ(layers->khrSpecular.factor, 0.6f);
+    expectNear(layers->khrSpecular.colorFactor, {0.5f, 0.6f, 0.7f}, 1e-6f);
+    EXPECT_TRUE(isFile(layers->khrSpecular.texture));
+    EXPECT_EQ(layers->khrSpecular.texture.uvSet, 1);
+    const TextureRef& color = layers->khrSpecular.colorTexture;
+    EXPECT_TRUE(isInside(color));
+    EXPECT_EQ(color.wrapS, 33071);
+    EXPECT_EQ(color.wrapT, 33648);
+    EXPECT_EQ(color.magFilter, 9728);
+    EXPECT_EQ(color.minFilter, 9984);
+    // offset then scale: uv' = (0.25 + 2 u, 0.5 + 4 v)
+    const glm::vec3 moved = color.transform * glm::vec3(0.5f, 0.25f, 1.0f);
+    expectNear(moved, {1.25f, 1.5f, 1.0f}, 1e-6f);
+    // the same image through Assimp (sheen's colour) and through the JSON: the same reference
+    EXPECT_FALSE(layers->sheen.colorTexture < color || color < layers->sheen.colorTexture);
+
+    EXPECT_FLOAT_EQ(layers->emissiveStrength, 5.0f);
+    expectNear(layers->emissiveFactor, {1.0f, 0.5f, 0.25f}, 1e-6f);  // strength kept apart
+    EXPECT_EQ(layers->extensions,
+              (std::vector<std::string>{"KHR_materials_clearcoat", "KHR_materials_sheen",
+                                        "KHR_materials_transmission", "KHR_materials_volume",
+                                        "KHR_materials_ior", "KHR_materials_specular",
+                                        "KHR_materials_emissive_strength"}));
+
+    // a material without them: the specifications' defaults
+    EXPECT_EQ(plain->clearcoat.factor, 0.0f);
+    EXPECT_EQ(plain->sheen.colorFactor, glm::vec3(0.0f));
+    EXPECT_EQ(plain->transmission.factor, 0.0f);
+    EXPECT_EQ(plain->volume.thicknessFactor, 0.0f);
+    EXPECT_TRUE(std::isinf(plain->volume.attenuationDistance));
+    EXPECT_EQ(plain->ior, 1.5f);
+    EXPECT_EQ(plain->khrSpecular.factor, 1.0f);
+    EXPECT_EQ(plain->khrSpecular.colorFactor, glm::vec3(1.0f));
+    EXPECT_EQ(plain->emissiveStrength, 1.0f);
+    EXPECT_TRUE(plain->extensions.empty());
+    for (const TextureRef* ref : std::array{&plain->clearcoat.texture, &plain->khrSpecular.texture})
+        EXPECT_FALSE(ref->present());
+}
+
+// A KHR_materials_specular texture the file does not have is one line naming the material.
+TEST(GltfFeatures, AMissingSpecularTextureIsOneLine) {
+    const fs::path dir = testOutputDir("gltf_features_specular_missing");
+    const fs::path file = writeTextFile(dir, "specular.gltf", R"({"asset":{"version":"2.0"},
+)" + squareBuffersJson(1.0f) + R"(
+"materials":[{"name":"s","extensions":{"KHR_materials_specular":{"specularTexture":{"index":3}}}}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) + R"(]}],
+"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})");
+    try {
+        loadModel(file);
+        FAIL() << "loaded";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), (displayPath(file) + ": material 's': KHR_materials_specular's "
+                                                    "specularTexture names a texture the file "
+                                                    "does not have")
+                                   .c_str());
+    }
+}
+
 TEST(GltfFeatures, ExtensionListsNameWhatIsNotDrawn) {
     const Model model = loadModel(writeFeatureFile(testOutputDir("gltf_features_extensions")));
     EXPECT_EQ(model.extensionsRequired,

@@ -6,6 +6,8 @@
 #include <set>
 #include <tuple>
 
+#include "support/gltf_scene.h"
+#include "support/process.h"
 #include "support/test_data.h"
 
 #include "base/error.h"
@@ -77,13 +79,24 @@ void expectRoundTrip(const fs::path& file) {
                            b.glossinessFactor, b.alphaMode, b.alphaCutoff));
         EXPECT_EQ(a.emissiveFactor, b.emissiveFactor);
         EXPECT_EQ(a.specularFactor, b.specularFactor);
-        expectSameTexture(original, a.baseColorTexture, packed, b.baseColorTexture);
-        expectSameTexture(original, a.metallicRoughnessTexture, packed, b.metallicRoughnessTexture);
-        expectSameTexture(original, a.normalTexture, packed, b.normalTexture);
-        expectSameTexture(original, a.occlusionTexture, packed, b.occlusionTexture);
-        expectSameTexture(original, a.emissiveTexture, packed, b.emissiveTexture);
-        expectSameTexture(original, a.specularGlossinessTexture, packed,
-                          b.specularGlossinessTexture);
+        // sample 10's extensions
+        EXPECT_EQ(std::tie(a.clearcoat.factor, a.clearcoat.roughnessFactor, a.clearcoat.normalScale,
+                           a.sheen.colorFactor, a.sheen.roughnessFactor, a.transmission.factor,
+                           a.volume.thicknessFactor, a.volume.attenuationDistance,
+                           a.volume.attenuationColor, a.ior),
+                  std::tie(b.clearcoat.factor, b.clearcoat.roughnessFactor, b.clearcoat.normalScale,
+                           b.sheen.colorFactor, b.sheen.roughnessFactor, b.transmission.factor,
+                           b.volume.thicknessFactor, b.volume.attenuationDistance,
+                           b.volume.attenuationColor, b.ior));
+        EXPECT_EQ(std::tie(a.khrSpecular.factor, a.khrSpecular.colorFactor, a.emissiveStrength,
+                           a.extensions),
+                  std::tie(b.khrSpecular.factor, b.khrSpecular.colorFactor, b.emissiveStrength,
+                           b.extensions));
+        const auto slotsA = a.textures(), slotsB = b.textures();
+        for (size_t slot = 0; slot < slotsA.size(); ++slot) {
+            SCOPED_TRACE(Material::kTextureNames[slot]);
+            expectSameTexture(original, *slotsA[slot], packed, *slotsB[slot]);
+        }
     }
     ASSERT_EQ(packed.primitives.size(), original.primitives.size());
     for (size_t i = 0; i < original.primitives.size(); ++i) {
@@ -105,6 +118,12 @@ void expectRoundTrip(const fs::path& file) {
 TEST(ModelPack, TheProjectsModelsComeBackAsTheLoaderMadeThem) {
     for (const char* name : {"unlit_showcase.gltf", "pbr_showcase.gltf", "pbr_workflows.gltf"})
         expectRoundTrip(modelDir() / name);
+}
+
+// Sample 10's material extensions, a texture in every slot, half of them inside the file.
+TEST(ModelPack, MaterialExtensionsComeBack) {
+    expectRoundTrip(
+        test::writeMaterialExtensionsFile(test::testOutputDir("model_pack_extensions")));
 }
 
 // Embedded images (a .glb's buffer), two texture coordinate sets, texture transforms.
@@ -145,7 +164,7 @@ TEST(ModelPack, DamagedPacksAreOneErrorNamingTheFile) {
     std::string other = bytes;
     other[8] = 7;  // the layout's version
     EXPECT_EQ(error(other),
-              "x.gltf.pbrmodel: a model pack of layout 7, not 1 (made by another "
+              "x.gltf.pbrmodel: a model pack of layout 7, not 2 (made by another "
               "version of the suite)");
 }
 
