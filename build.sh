@@ -235,15 +235,15 @@ copy_to_long_checkout() {
 # build and run: --help works, and without a display the sample says what is missing. Built in
 # a folder of its own with the assets the Release build baked (nothing is baked twice) and
 # without the tools, which the Release build has built already. Only common/'s context layer
-# compiles differently there, so two samples stand for all: 01 links the whole stack up to app/,
-# 07 the ibl/ and gltf/ layers and Assimp as found without pkg-config. Built unoptimized (Debug):
+# compiles differently there, so one sample stands for all: 07 links every layer of common/, the
+# ibl/ and gltf/ ones and Assimp as found without pkg-config included. Built unoptimized (Debug):
 # what is checked is that it builds and runs, and -O0 compiles in two thirds of the time.
 check_windowed_build() {
     echo "build.sh: the windowed-only configuration (no OSMesa, no EGL)" >&2
     cmake --preset windowed -B build/windowed-check -DPBR_BUILD_TOOLS=OFF -DCMAKE_BUILD_TYPE=Debug \
           -DPBR_BAKED_RESOURCES="$repo_dir/build/release/resources" >/dev/null
-    cmake --build build/windowed-check -j "$(nproc)" --target 01_lighting 07_gltf_metallic_roughness
-    local sample=build/windowed-check/bin/01_lighting output status=0
+    cmake --build build/windowed-check -j "$(nproc)" --target 07_gltf_metallic_roughness
+    local sample=build/windowed-check/bin/07_gltf_metallic_roughness output status=0
     "$sample" --help >/dev/null || { echo "build.sh: $sample --help failed" >&2; exit 1; }
     output=$(env -u DISPLAY -u WAYLAND_DISPLAY "$sample" 2>&1) || status=$?
     if [ "$status" -ne 1 ] || ! grep -q "no offscreen backend" <<<"$output"; then

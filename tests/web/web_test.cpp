@@ -218,7 +218,8 @@ TEST(Web, ThePageCarriesTheFrameTimePauseAndCommandLine) {
     PBR_NEED_WEB(sample);
     const fs::path dir = testOutputDir("web_bar");
     const PageRun page =
-        runPage(sample, {"--frames", "4", "--output", "bar.png"}, dir / "paused", "press=pause");
+        runPage(sample, {"--frames", "4", "--size", "320x180", "--output", "bar.png"},
+                dir / "paused", "press=pause");
     ASSERT_EQ(page.exitCode, std::optional<int>(0)) << page.log << page.browser.err;
     std::printf("the bar: '%s', '%s'\n", page.frame.c_str(), page.command.c_str());
     EXPECT_TRUE(std::regex_match(page.frame, std::regex("[0-9]+ ms a frame"))) << page.frame;
@@ -228,9 +229,10 @@ TEST(Web, ThePageCarriesTheFrameTimePauseAndCommandLine) {
     // a view's caption over the picture, as in a window
     // and its scale bar, at gain 4: x of x / (1 + x), 0.25, 1 and 4 before the gain, at a fifth,
     // a half and four fifths of the levels
-    const PageRun view =
-        runPage("01_lighting", {"--frames", "1", "--output", "d.png", "--view", "d", "--gain", "4"},
-                dir / "view");
+    const PageRun view = runPage(
+        "01_lighting",
+        {"--frames", "1", "--size", "320x180", "--output", "d.png", "--view", "d", "--gain", "4"},
+        dir / "view");
     ASSERT_EQ(view.exitCode, std::optional<int>(0)) << view.log;
     EXPECT_EQ(view.command.find("--time"), std::string::npos) << "a running page: " << view.command;
     EXPECT_EQ(view.caption,
