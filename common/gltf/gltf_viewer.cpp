@@ -42,7 +42,8 @@ void describe(const Model& model, bool punctual) {
                      "without %s\n",
                      file.c_str(), joined(required).c_str(), required.size() > 1 ? "them" : "it");
     }
-    if (const auto used = extensionsNotDrawn(model, kDrawnExtensions, false); !used.empty()) {
+    if (auto used = extensionsNotDrawn(model, kDrawnExtensions, false); !used.empty()) {
+        for (std::string& name : used) name = extensionAndItsMaterials(model, name);
         std::fprintf(stderr, "note: %s: uses %s (optional), not drawn\n", file.c_str(),
                      joined(used).c_str());
     }

@@ -42,6 +42,20 @@ std::vector<std::string> extensionsNotDrawn(const Model& model,
     return out;
 }
 
+std::string extensionAndItsMaterials(const Model& model, const std::string& extension) {
+    std::vector<std::string> names;
+    for (const Material& material : model.materials) {
+        if (std::find(material.extensions.begin(), material.extensions.end(), extension) !=
+            material.extensions.end())
+            names.push_back("'" + printable(material.name) + "'");
+    }
+    if (names.empty()) return extension;
+    std::string text = extension + (names.size() == 1 ? " (material " : " (materials ");
+    for (size_t i = 0; i < names.size() && i < 3; ++i) text += (i ? ", " : "") + names[i];
+    if (names.size() > 3) text += " and " + std::to_string(names.size() - 3) + " more";
+    return text + ")";
+}
+
 Image loadTextureImage(const Model& model, const TextureRef& ref, int wantChannels) {
     if (!ref.present()) throw Error(displayPath(model.file) + ": no such texture");
     if (ref.embedded < 0) return readImage(ref.file, wantChannels);

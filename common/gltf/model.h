@@ -199,6 +199,11 @@ glm::mat3 textureTransform(const glm::vec2& offset, float rotation, const glm::v
 std::vector<std::string> extensionsNotDrawn(const Model& model,
                                             const std::vector<std::string>& drawn, bool required);
 
+// An extension's name with the materials that use it, for a note: "KHR_materials_sheen (materials
+// 'Velvet', 'Cushion')", at most three named ("and 2 more"); the name alone where no material
+// names it (an extension of the file or its lights).
+std::string extensionAndItsMaterials(const Model& model, const std::string& extension);
+
 // Loads and checks a model. Throws Error("<file>: <reason>") for anything that cannot be drawn
 // sanely: unreadable files, Assimp's refusals, no triangles, non-finite positions, indices out of
 // range, missing texture files. glTF's uv origin (top left) is kept, so images load top row first.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <fstream>
 
+#include "support/gltf_scene.h"
 #include "support/golden.h"
 #include "support/test_data.h"
 
@@ -180,10 +181,12 @@ TEST(ModelFile, EveryCorpusFileIn07) {
             continue;
         }
         ++drawn;
-        EXPECT_GT(pixelsUnlikeCorner(readImage(output, 3)), 20u) << file << " drew nothing visible: " << o.render.run.err;
+        EXPECT_GT(pixelsUnlikeCorner(readImage(output, 3)), 20u)
+            << file << " drew nothing visible: " << o.render.run.err;
         const std::string text = readBytes(file);
         // (KHR_materials_pbrSpecularGlossiness is drawn: 07 and 08 share one shading path)
-        for (const char* extension : {"KHR_materials_emissive_strength", "KHR_draco_mesh_compression"}) {
+        for (const char* extension :
+             {"KHR_materials_emissive_strength", "KHR_draco_mesh_compression"}) {
             const size_t required = text.find("extensionsRequired");
             if (required != std::string::npos &&
                 text.find(extension, required) != std::string::npos &&
@@ -198,6 +201,30 @@ TEST(ModelFile, EveryCorpusFileIn07) {
     }
     std::printf("07 on the corpus: %d files drawn, %d refused in one line\n", drawn, refused);
     EXPECT_GT(drawn, 20);
+}
+
+// 07 draws the core material alone: a file whose materials use sample 10's extensions is drawn,
+// with one note naming each extension and the material that uses it (the file's own JSON names
+// material 'layers' for all seven; KHR_texture_transform, which 07 draws, is not named).
+TEST(ModelFile, A07SaysWhichMaterialUsesWhatItDoesNotDraw) {
+    const fs::path dir = testOutputDir("model_extensions_07");
+    const Outcome o = run("07_gltf_metallic_roughness", writeMaterialExtensionsFile(dir),
+                          dir / "extensions.png", {"--no-ibl"});
+    ASSERT_FALSE(o.refused) << o.render.run.err;
+    std::vector<std::string> notes;
+    for (const std::string& line : o.render.run.errLines()) {
+        if (line.find("(optional), not drawn") != std::string::npos) notes.push_back(line);
+    }
+    ASSERT_EQ(notes.size(), 1u) << o.render.run.err;
+    std::string expected;
+    for (const char* name :
+         {"clearcoat", "sheen", "transmission", "volume", "ior", "specular", "emissive_strength"}) {
+        expected += std::string(expected.empty() ? "" : ", ") + "KHR_materials_" + name +
+                    " (material 'layers')";
+    }
+    EXPECT_NE(notes[0].find(": uses " + expected + " (optional), not drawn"), std::string::npos)
+        << notes[0];
+    EXPECT_EQ(notes[0].find("KHR_texture_transform"), std::string::npos) << notes[0];
 }
 
 }  // namespace
