@@ -315,6 +315,19 @@ std::optional<JsonValue> gltfJson(std::string_view bytes) {
     return parseJson(json);
 }
 
+int jsonIndex(const JsonValue* value) {
+    if (!value || value->type != JsonValue::Type::Number || value->number < 0.0 ||
+        value->number != std::floor(value->number) || value->number > 1e9)
+        return -1;
+    return int(value->number);
+}
+
+const JsonValue* jsonItem(const JsonValue& document, std::string_view list, int index) {
+    const JsonValue* items = document.find(list);
+    if (!items || index < 0 || size_t(index) >= items->items.size()) return nullptr;
+    return &items->items[size_t(index)];
+}
+
 namespace {
 
 std::vector<std::string> strings(const JsonValue* list) {
@@ -324,20 +337,6 @@ std::vector<std::string> strings(const JsonValue* list) {
         if (item.type == JsonValue::Type::String) out.push_back(item.text);
     }
     return out;
-}
-
-// The index a member holds, or -1 when it is absent or not a non-negative integer.
-int indexOf(const JsonValue* value) {
-    if (!value || value->type != JsonValue::Type::Number || value->number < 0.0 ||
-        value->number != std::floor(value->number) || value->number > 1e9)
-        return -1;
-    return int(value->number);
-}
-
-const JsonValue* item(const JsonValue& document, std::string_view list, int index) {
-    const JsonValue* items = document.find(list);
-    if (!items || index < 0 || size_t(index) >= items->items.size()) return nullptr;
-    return &items->items[size_t(index)];
 }
 
 }  // namespace
@@ -360,26 +359,26 @@ std::vector<int> assimpMaterialOrder(const JsonValue& document) {
     };
     // Assimp reads a node's children before its mesh, and a mesh's primitives in order.
     std::function<void(int, int)> readNode = [&](int index, int depth) {
-        const JsonValue* node = item(document, "nodes", index);
+        const JsonValue* node = jsonItem(document, "nodes", index);
         if (!node || depth > 256 || !mark(nodeRead, index)) return;
         if (const JsonValue* children = node->find("children")) {
-            for (const JsonValue& child : children->items) readNode(indexOf(&child), depth + 1);
+            for (const JsonValue& child : children->items) readNode(jsonIndex(&child), depth + 1);
         }
-        const int meshIndex = indexOf(node->find("mesh"));
-        const JsonValue* mesh = item(document, "meshes", meshIndex);
+        const int meshIndex = jsonIndex(node->find("mesh"));
+        const JsonValue* mesh = jsonItem(document, "meshes", meshIndex);
         if (!mesh || !mark(meshRead, meshIndex)) return;
         if (const JsonValue* primitives = mesh->find("primitives")) {
             for (const JsonValue& primitive : primitives->items) {
-                const int material = indexOf(primitive.find("material"));
-                if (item(document, "materials", material) && mark(materialRead, material))
+                const int material = jsonIndex(primitive.find("material"));
+                if (jsonItem(document, "materials", material) && mark(materialRead, material))
                     order.push_back(material);
             }
         }
     };
     const JsonValue* sceneIndex = document.find("scene");
-    const JsonValue* scene = item(document, "scenes", sceneIndex ? indexOf(sceneIndex) : 0);
+    const JsonValue* scene = jsonItem(document, "scenes", sceneIndex ? jsonIndex(sceneIndex) : 0);
     if (const JsonValue* roots = scene ? scene->find("nodes") : nullptr) {
-        for (const JsonValue& root : roots->items) readNode(indexOf(&root), 0);
+        for (const JsonValue& root : roots->items) readNode(jsonIndex(&root), 0);
     }
     return order;
 }
@@ -387,7 +386,7 @@ std::vector<int> assimpMaterialOrder(const JsonValue& document) {
 std::optional<int> texCoordOverride(const JsonValue& textureInfo) {
     const JsonValue* extensions = textureInfo.find("extensions");
     const JsonValue* transform = extensions ? extensions->find("KHR_texture_transform") : nullptr;
-    const int set = transform ? indexOf(transform->find("texCoord")) : -1;
+    const int set = transform ? jsonIndex(transform->find("texCoord")) : -1;
     if (set < 0) return std::nullopt;
     return set;
 }
@@ -638,7 +637,7 @@ private:
     // "<names><index><as>, but the file has ..." or "<what> is ..., not an index".
     bool index(const JsonValue& value, const std::string& names, const std::string& as,
                const std::string& what, const char* kind, size_t count, int& out) {
-        out = indexOf(&value);
+        out = jsonIndex(&value);
         if (out < 0) return fail(what + " is " + describe(value) + ", not an index");
         if (size_t(out) >= count) {
             const std::string kinds = kind + std::string(count == 1                         ? ""
@@ -946,7 +945,7 @@ private:
             for (std::uint64_t i = 0; i < 2; ++i) {
                 const std::uint64_t at = view.offset + read.offset + i * stride;
                 if (at + size > bytes->size()) return true;  // Assimp's to judge
-                for (std::uint64_t b = 0; b < size; ++b)  // little-endian
+                for (std::uint64_t b = 0; b < size; ++b)     // little-endian
                     first[i] |= std::uint64_t(std::uint8_t((*bytes)[size_t(at + b)])) << (8 * b);
             }
         }
@@ -1093,7 +1092,7 @@ private:
             if (!attributes || !attributes->find(needed)) return fail(what + " has no " + needed);
         }
         const auto countOf = [&](const JsonValue* value) {
-            return accessorsRead_[size_t(indexOf(value))]->count;
+            return accessorsRead_[size_t(jsonIndex(value))]->count;
         };
         const std::uint64_t count = countOf(attributes->find("WEIGHTS_0"));
         for (const auto& [name, value] : attributes->members) {

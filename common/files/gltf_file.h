@@ -40,6 +40,11 @@ struct JsonValue {
     const JsonValue* find(std::string_view key) const;
 };
 
+// A glTF index a member holds (a whole number, 0 to 1e9), or -1 when it is absent or not one.
+int jsonIndex(const JsonValue* value);
+// Item `index` of the document's top-level list `list` ("textures", "images"...), or nullptr.
+const JsonValue* jsonItem(const JsonValue& document, std::string_view list, int index);
+
 // The value `text` holds, or nullopt when it is not well-formed JSON.
 std::optional<JsonValue> parseJson(std::string_view text);
 // The JSON of a glTF file (.gltf text, or a .glb's JSON chunk), or nullopt when unsound.

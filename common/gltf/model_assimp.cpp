@@ -12,6 +12,7 @@
 #include <cctype>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <set>
 #include <type_traits>
 #include <utility>
@@ -375,9 +376,11 @@ std::vector<PunctualLight> readLights(const aiScene* scene, const std::string& w
 // materials are matched with the file's by the order it reads them in (assimpMaterialOrder),
 // checked against their names; where they do not match, these are left out, saying so.
 
-// A JSON number, or nullopt when the value is absent or not a finite number.
+// A JSON number as a float, or nullopt when the value is absent, not a number, or past a
+// float's range (a file's 1e300 is refused, not turned into infinity).
 std::optional<float> jsonNumber(const JsonValue* value) {
-    if (!value || value->type != JsonValue::Type::Number || !std::isfinite(value->number))
+    if (!value || value->type != JsonValue::Type::Number || !std::isfinite(value->number) ||
+        std::abs(value->number) > double(std::numeric_limits<float>::max()))
         return std::nullopt;
     return float(value->number);
 }
@@ -392,18 +395,6 @@ std::optional<glm::vec3> jsonVec3(const JsonValue* value) {
     }
     return out;
 }
-// A glTF index: a whole number from 0, or -1.
-int jsonIndex(const JsonValue* value) {
-    const auto number = jsonNumber(value);
-    if (!number || *number < 0.0f || *number != std::floor(*number) || *number > 1e9f) return -1;
-    return int(*number);
-}
-const JsonValue* jsonItem(const JsonValue& document, std::string_view list, int index) {
-    const JsonValue* items = document.find(list);
-    if (!items || index < 0 || size_t(index) >= items->items.size()) return nullptr;
-    return &items->items[size_t(index)];
-}
-
 // The TextureRef of a textureInfo that Assimp did not read, as Assimp would have made it: an
 // image with its bytes inside the file (a buffer view, a data: URI) is embedded image N, N
 // counting the file's images with bytes inside it before it (Assimp numbers them so); any other

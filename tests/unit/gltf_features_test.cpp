@@ -453,6 +453,23 @@ TEST(GltfFeatures, MaterialExtensionsAreRead) {
         EXPECT_FALSE(ref->present());
 }
 
+// A number of the JSON past a float's range is not read (the specification's default stays):
+// converted, 1e300 would be undefined behaviour, and infinity on this platform.
+TEST(GltfFeatures, ExtensionNumbersPastAFloatKeepTheirDefaults) {
+    const Model model = loadModel(writeTextFile(testOutputDir("gltf_features_huge_numbers"),
+                                                "huge.gltf", R"({"asset":{"version":"2.0"},
+)" + squareBuffersJson(1.0f) + R"(
+"materials":[{"name":"h","extensions":{
+  "KHR_materials_specular":{"specularFactor":1e300,"specularColorFactor":[0.5,-1e39,0.5]},
+  "KHR_materials_emissive_strength":{"emissiveStrength":3.5e38}}}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) + R"(]}],
+"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})"));
+    const Material& m = model.materials.front();
+    EXPECT_EQ(m.khrSpecular.factor, 1.0f);
+    EXPECT_EQ(m.khrSpecular.colorFactor, glm::vec3(1.0f));
+    EXPECT_EQ(m.emissiveStrength, 1.0f);
+}
+
 // A KHR_materials_specular texture the file does not have is one line naming the material.
 TEST(GltfFeatures, AMissingSpecularTextureIsOneLine) {
     const fs::path dir = testOutputDir("gltf_features_specular_missing");
