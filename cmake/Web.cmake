@@ -1,8 +1,8 @@
 # The browser build: configured by ./build.sh web through emcmake (Debian's emscripten 3.1.6) into
 # build/web. The same samples/NN/main.cpp, common/ and shaders/ as the native build, for WebGL 2;
 # what the web needs differently lives in common/ behind PBR_WEBGL (common/gl/gl.h). Each sample is
-# a page (.html with its shaders and assets inside) beside the program of its layer of common/
-# and the bundles it loads (build/web/assets, each a <script src>), so it opens from file:// as
+# a page (.html with its shaders and assets inside) beside the program every page runs and the
+# bundles it loads (build/web/assets, each a <script src>), so it opens from file:// as
 # well as from any static server (samples/CMakeLists.txt).
 #
 # Its assets are the ones a native build baked (PBR_BAKED_RESOURCES, build/release/resources):

@@ -95,7 +95,7 @@ def page_weight(page):
     ["assets/materials.js", ""] always, ["assets/materials.js", "--textured"] with that flag."""
     text = page.read_text(encoding="utf-8", errors="replace")
     bundles = sorted(set(re.findall(r'\["(assets/[^"]+\.js)", "([^"]*)"\]', text)))
-    # and the program of its layer (<script src="assets/LAYER_samples.js">, always loaded)
+    # and the program (<script src="assets/samples.js">, always loaded)
     bundles += [(src, "") for src in sorted(set(re.findall(r'<script src="(assets/[^"]+\.js)"', text)))]
     size = lambda bundle: (page.parent / bundle).stat().st_size
     always = page.stat().st_size + sum(size(b) for b, flag in bundles if not flag)

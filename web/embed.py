@@ -7,13 +7,13 @@ data is deflated again by zlib (the same pixels in 31 % less: png_redeflated), a
 files travel deflated, inflated by the browser before main() (the baked IBL maps).
 
     web/embed.py --page build/web/05_ibl_specular.html --shell web/shell.html
-                 --program 05_ibl_specular --script assets/ibl_samples.js
+                 --program 05_ibl_specular --script assets/samples.js
                  [--bundle assets/materials.js[@FLAG]] SOURCE@/DESTINATION ...
     web/embed.py --write-bundle build/web/assets/materials.js SOURCE@/DESTINATION ...
 
 --page writes a sample's page: the shell (web/shell.html) with, where it has its
 <!-- pbr:files --> marker, a script with the files, the loader and the sample's name (argv[0],
-which web/samples_main.cpp runs), and, at {{{ SCRIPT }}}, the program the pages of its layer
+which web/samples_main.cpp runs), and, at {{{ SCRIPT }}}, the program the pages
 share (--script, the wasm inside, loaded with <script src>; one that cannot be loaded is the
 page's one error line). --bundle names a bundle (a path relative to the page) the page loads
 before main(), always, or only when its command line holds FLAG (05 reads the material sets

@@ -18,10 +18,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A sample's headless run must succeed with zero GL errors reported.
+// A sample's headless run must succeed with zero GL errors reported and no GL object leaked.
 void expectCleanRun(const SampleRender& render) {
     EXPECT_EQ(render.run.exitCode, 0) << render.run.err;
     EXPECT_EQ(render.run.err.find("GL error"), std::string::npos) << render.run.err;
+    EXPECT_EQ(render.run.err.find("leaked"), std::string::npos) << render.run.err;
     EXPECT_FALSE(render.renderer.empty()) << "no 'wrote' line in: " << render.run.out;
 }
 

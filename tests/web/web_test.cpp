@@ -461,7 +461,7 @@ TEST(Web, EveryPageWeighsAtMost32MBAndCarriesNothingTwice) {
     std::set<std::string> samples;
     for (const GoldenCase& golden : webGoldenCases()) samples.insert(golden.sample);
     // the bundles a page loads (["assets/NAME.js", "FLAG"]) and the program it runs
-    // (<script src="assets/LAYER_samples.js">, shared by the pages of a layer of common/)
+    // (<script src="assets/samples.js">, shared by every page)
     const std::regex bundle(
         R"re(\["(assets/[^"]+\.js)", "([^"]*)"\]|<script src="(assets/[^"]+\.js)")re");
     for (const std::string& sample : samples) {
