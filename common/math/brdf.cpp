@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <numbers>
 #include <vector>
 
@@ -345,14 +346,16 @@ glm::dvec3 lutIntegrand(const glm::dvec3& V, const glm::dvec3& L, double roughne
     return {specular * (1.0 - Fc), specular * Fc, sheen};
 }
 
-// The integral over half vectors of lutIntegrand times the Jacobian 4 (v.h) (l = reflect(-v, h)).
-// theta_h runs over panels graded geometrically towards 0 (the GGX lobe, width alpha) and towards
-// pi/2 (Charlie's, width sqrt(alpha)), 16 Gauss-Legendre nodes each; phi_h over [0, pi] by the
+// The integral over half vectors of integrand(V, L) times the Jacobian 4 (v.h) (l = reflect(-v, h)).
+// theta_h runs over panels graded geometrically towards 0 (a GGX lobe, width alpha) and towards
+// pi/2 (a Charlie one, width sqrt(alpha)), 16 Gauss-Legendre nodes each; phi_h over [0, pi] by the
 // midpoint rule, doubled (v lies in the xz plane: the integrand is mirror-symmetric in phi).
-glm::dvec3 halfVectorQuadrature(double NdotV, double roughness) {
+template <typename T, typename Integrand>
+T halfVectorQuadrature(double NdotV, double alpha, const Integrand& integrand) {
     static const GaussLegendre rule(16);
     constexpr int kPhi = 256;
-    const double alpha = std::max(roughness * roughness, 1e-8), halfPi = kPi / 2.0;
+    const double halfPi = kPi / 2.0;
+    alpha = std::max(alpha, 1e-8);
     std::vector<double> edges = {0.0, halfPi};
     for (double d = alpha / 64.0; d < halfPi; d *= 2.0) edges.push_back(d);
     for (double d = std::sqrt(alpha) / 64.0; d < halfPi; d *= 2.0) edges.push_back(halfPi - d);
@@ -361,13 +364,13 @@ glm::dvec3 halfVectorQuadrature(double NdotV, double roughness) {
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
     const glm::dvec3 V(std::sqrt(std::max(0.0, 1.0 - NdotV * NdotV)), 0.0, NdotV);
-    glm::dvec3 sum(0.0);
+    T sum(0.0);
     for (size_t p = 0; p + 1 < edges.size(); ++p) {
         const double lo = edges[p], hi = edges[p + 1], half = (hi - lo) / 2.0;
         for (size_t n = 0; n < rule.nodes.size(); ++n) {
             const double theta = lo + half * (rule.nodes[n] + 1.0);
             const double weightTheta = half * rule.weights[n] * std::sin(theta);
-            glm::dvec3 ring(0.0);
+            T ring(0.0);
             for (int k = 0; k < kPhi; ++k) {
                 const double phi = kPi * (k + 0.5) / kPhi;
                 const glm::dvec3 H(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
@@ -375,7 +378,8 @@ glm::dvec3 halfVectorQuadrature(double NdotV, double roughness) {
                 const double VdotH = glm::dot(V, H);
                 if (VdotH <= 0.0) continue;
                 const glm::dvec3 L = 2.0 * VdotH * H - V;
-                ring += lutIntegrand(V, L, roughness) * (4.0 * VdotH);
+                if (L.z <= 0.0) continue;
+                ring += integrand(V, L) * (4.0 * VdotH);
             }
             sum += ring * (weightTheta * 2.0 * kPi / kPhi);
         }
@@ -383,7 +387,18 @@ glm::dvec3 halfVectorQuadrature(double NdotV, double roughness) {
     return sum;
 }
 
+glm::dvec3 halfVectorQuadrature(double NdotV, double roughness) {
+    return halfVectorQuadrature<glm::dvec3>(
+        NdotV, roughness * roughness,
+        [roughness](const glm::dvec3& V, const glm::dvec3& L) { return lutIntegrand(V, L, roughness); });
+}
+
 }  // namespace
+
+double integrateOverLights(double NdotV, double alpha,
+                           const std::function<double(const glm::dvec3&, const glm::dvec3&)>& integrand) {
+    return halfVectorQuadrature<double>(NdotV, alpha, integrand);
+}
 
 glm::dvec2 splitSumQuadrature(double NdotV, double roughness) {
     return glm::dvec2(halfVectorQuadrature(NdotV, roughness));

@@ -1,6 +1,7 @@
 #pragma once
 // The Cook-Torrance BRDF of the tutorial on the CPU (GLM only, no GL): the same functions with the
 // same names as shaders/include/brdf.glsl, so tests can shade a pixel independently of the GPU.
+#include <functional>
 #include <span>
 
 #include <glm/glm.hpp>
@@ -101,6 +102,12 @@ glm::dvec2 splitSumQuadrature(double NdotV, double roughness);
 // The directional albedo of Charlie sheen (Estevez and Kulla; Ashikhmin's visibility), what the
 // LUT's B channel holds: integral of D_Charlie(alpha = roughness^2) V_Ashikhmin NdotL dl.
 double sheenQuadrature(double NdotV, double roughness);
+// The integral over the light directions l of the upper hemisphere (z up) of integrand(V, L) dl,
+// V = (sqrt(1 - NdotV^2), 0, NdotV), by the half-vector quadrature above, its panels graded for
+// lobes of width alpha (GGX's around the normal, Charlie's at the horizon). The integrand must be
+// isotropic (mirror-symmetric about the xz plane).
+double integrateOverLights(double NdotV, double alpha,
+                           const std::function<double(const glm::dvec3&, const glm::dvec3&)>& integrand);
 // The same sums over light directions directly, on a uniform grid of `steps` x 4 `steps`
 // midpoints in (theta_l, phi_l): slow, and fit only for wide lobes (roughness >= 0.4); kept as
 // a check of the half-vector quadrature itself.

@@ -28,6 +28,7 @@
 #include "ibl/ibl_cache.h"
 #include "math/brdf.h"
 #include "math/cube_geometry.h"
+#include "math/gltf_extensions.h"
 #include "math/sphere_grid.h"
 #include "math/tonemap.h"
 #include "support/mesh_hit.h"
@@ -1076,6 +1077,117 @@ void main()
             }
         }
         std::printf("exposure %.1f: largest difference GLSL - CPU %.2e\n", double(exposure), worst);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glEnable(GL_DEPTH_TEST);
+    while (app.nextFrame()) {
+    }
+}
+
+// The GLSL layers of the advanced glTF materials (shaders/include/gltf_extensions.glsl) against
+// their CPU mirror (common/math/gltf_extensions.cpp), which the unit tests integrate in white
+// furnaces: 64 pairs of view and light directions (NdotV and NdotL from 0.05 to 1, the light
+// turned 40 degrees about the normal), one a column of a float target, each function a row, at
+// four roughnesses (which also set the ior, 1 + 2 roughness). Within 1e-4 relative (the GPU's
+// pow and exp against the CPU's; measured below).
+TEST(Gl, GltfExtensionLayersMatchTheCpu) {
+    const fs::path dir = test::testOutputDir("gl_gltf_extensions");
+    App app = makeApp(dir);
+    std::vector<glm::vec3> directions;  // V of each case, then L of each
+    constexpr int kCount = 64;
+    for (int i = 0; i < kCount; ++i) {
+        const float NdotV = 0.05f + 0.95f * float(i % 8) / 7.0f;
+        directions.push_back({std::sqrt(1.0f - NdotV * NdotV), 0.0f, NdotV});
+    }
+    for (int i = 0; i < kCount; ++i) {
+        const float NdotL = 0.05f + 0.95f * float(i / 8) / 7.0f, sinL = std::sqrt(1.0f - NdotL * NdotL);
+        directions.push_back({-sinL * std::cos(0.7f), sinL * std::sin(0.7f), NdotL});
+    }
+    Texture2D inputTexture(kCount, 2, GL_RGB32F);
+    glBindTexture(GL_TEXTURE_2D, inputTexture.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kCount, 2, GL_RGB, GL_FLOAT, directions.data());
+    const fs::path fragment = dir / "layers.frag";
+    writeFileAtomically(fragment, R"(#version 330 core
+#include "brdf.glsl"
+#include "gltf_extensions.glsl"
+out vec4 FragColor;
+uniform sampler2D directions;
+uniform float roughness;
+const vec3 sheenColor = vec3(1.0, 0.5, 0.25);
+void main()
+{
+    int i = int(gl_FragCoord.x);
+    vec3 V = texelFetch(directions, ivec2(i, 0), 0).rgb;
+    vec3 L = texelFetch(directions, ivec2(i, 1), 0).rgb;
+    vec3 N = vec3(0.0, 0.0, 1.0);
+    float alpha = max(roughness * roughness, MIN_SHEEN_ALPHA);
+    float NdotH = dot(N, normalize(V + L));
+    float ior = 1.0 + 2.0 * roughness;
+    DielectricFresnel f = dielectricFresnel(ior, sheenColor * 20.0, roughness);
+    int row = int(gl_FragCoord.y);
+    if (row == 0)
+        FragColor = vec4(clearcoatDirect(N, V, L, roughness), D_Charlie(NdotH, alpha),
+                         V_Sheen(L.z, V.z, alpha), lambdaSheen(V.z, alpha));
+    else if (row == 1)
+        FragColor = vec4(sheenDirect(N, V, L, sheenColor, roughness), iorToF0(ior));
+    else if (row == 2)
+        FragColor = vec4(f.F0, f.F90);
+    else
+        FragColor = vec4(clearcoatFresnel(iorToF0(ior), V.z), sheenAlbedoScaling(sheenColor, V.z, L.z),
+                         coatOver(vec3(L.z), vec3(V.z), roughness).x, emission(sheenColor, 4.0, roughness).y);
+}
+)");
+    Shader shader(shaderDir() / "ibl/fullscreen.vert", fragment);
+    constexpr int kRows = 4;
+    const TestTarget target(kCount, kRows, GL_RGBA32F, false, "layers target");
+    glDisable(GL_DEPTH_TEST);
+    shader.set("directions", 0);
+    inputTexture.bind(0);
+    const GpuMesh quad(pbr::quad());
+    const glm::vec3 N(0.0f, 0.0f, 1.0f), sheenColor(1.0f, 0.5f, 0.25f);
+    std::array<std::array<double, 4>, kRows> worst{};
+    auto tolerance = [](int row, int c) { return (row == 0 && c < 2) || (row == 1 && c < 3) ? 5e-3 : 1e-4; };
+    for (const float roughness : {0.05f, 0.3f, 0.7f, 1.0f}) {
+        shader.set("roughness", roughness);
+        quad.draw();
+        std::vector<float> pixels(size_t(kCount) * kRows * 4);
+        glReadPixels(0, 0, kCount, kRows, GL_RGBA, GL_FLOAT, pixels.data());
+        for (int i = 0; i < kCount; ++i) {
+            const glm::vec3 V = directions[size_t(i)], L = directions[size_t(kCount + i)];
+            const float alpha = std::max(roughness * roughness, cpu::kMinSheenAlpha);
+            const float NdotH = glm::dot(N, glm::normalize(V + L)), ior = 1.0f + 2.0f * roughness;
+            const cpu::DielectricFresnel f =
+                cpu::dielectricFresnel(ior, sheenColor * 20.0f, roughness);
+            const glm::vec3 sheen = cpu::sheenDirect(N, V, L, sheenColor, roughness);
+            const std::array<glm::vec4, kRows> expected = {
+                glm::vec4(cpu::clearcoatDirect(N, V, L, roughness), cpu::D_Charlie(NdotH, alpha),
+                          cpu::V_Sheen(L.z, V.z, alpha), cpu::lambdaSheen(V.z, alpha)),
+                glm::vec4(sheen, cpu::iorToF0(ior)),
+                glm::vec4(f.F0, f.F90),
+                glm::vec4(cpu::clearcoatFresnel(cpu::iorToF0(ior), V.z),
+                          cpu::sheenAlbedoScaling(sheenColor, V.z, L.z),
+                          cpu::coatOver(glm::vec3(L.z), glm::vec3(V.z), roughness).x,
+                          cpu::emission(sheenColor, 4.0f, roughness).y)};
+            for (int row = 0; row < kRows; ++row) {
+                for (int c = 0; c < 4; ++c) {
+                    const float gpu = pixels[(size_t(row) * kCount + size_t(i)) * 4 + size_t(c)];
+                    const float cpu = expected[size_t(row)][c];
+                    const double relative =
+                        std::abs(double(gpu) - cpu) / std::max(std::abs(double(cpu)), 1e-3);
+                    worst[size_t(row)][size_t(c)] = std::max(worst[size_t(row)][size_t(c)], relative);
+                    EXPECT_LE(relative, tolerance(row, c))
+                        << "roughness " << roughness << ", case " << i << " (NdotV " << V.z
+                        << ", NdotL " << L.z << "), row " << row << ", channel " << c
+                        << ": GLSL " << gpu << ", CPU " << cpu;
+                }
+            }
+        }
+    }
+    for (int row = 0; row < kRows; ++row) {
+        std::printf("row %d: largest relative differences GLSL - CPU %.1e %.1e %.1e %.1e\n", row,
+                    worst[size_t(row)][0], worst[size_t(row)][1], worst[size_t(row)][2],
+                    worst[size_t(row)][3]);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glEnable(GL_DEPTH_TEST);

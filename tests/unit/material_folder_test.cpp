@@ -63,7 +63,7 @@ fs::path folderWith(const std::string& name, const std::vector<std::string>& fil
     return dir;
 }
 
-std::string errorOf(const fs::path& dir) {
+std::string folderErrorOf(const fs::path& dir) {
     try {
         findMaterialFiles(dir);
     } catch (const Error& e) {
@@ -98,22 +98,22 @@ TEST(MaterialFolder, DirectXAlone) {
 
 TEST(MaterialFolder, ProblemsAreOneLineEach) {
     const std::string twoAlbedos =
-        errorOf(folderWith("two_albedos", {"albedo.png", "BaseColor.jpg", "normal.png",
+        folderErrorOf(folderWith("two_albedos", {"albedo.png", "BaseColor.jpg", "normal.png",
                                            "metallic.png", "roughness.png"}));
     EXPECT_NE(twoAlbedos.find(": 2 files for the albedo map (BaseColor.jpg and albedo.png); "
                               "keep one"),
               std::string::npos)
         << twoAlbedos;
     const std::string noRoughness =
-        errorOf(folderWith("no_roughness", {"albedo.png", "normal.png", "metallic.png"}));
+        folderErrorOf(folderWith("no_roughness", {"albedo.png", "normal.png", "metallic.png"}));
     EXPECT_NE(noRoughness.find(": missing the roughness map (a .png or .jpg named roughness or "
                                "rough, after any prefix)"),
               std::string::npos)
         << noRoughness;
     const std::string noNormal =
-        errorOf(folderWith("no_normal", {"albedo.png", "roughness.png", "metallic.png"}));
+        folderErrorOf(folderWith("no_normal", {"albedo.png", "roughness.png", "metallic.png"}));
     EXPECT_NE(noNormal.find("missing the normal map"), std::string::npos) << noNormal;
-    EXPECT_NE(errorOf(test::testOutputDir("material_folder_none") / "nowhere")
+    EXPECT_NE(folderErrorOf(test::testOutputDir("material_folder_none") / "nowhere")
                   .find("nowhere: no such folder"),
               std::string::npos);
 }

@@ -1,0 +1,45 @@
+#pragma once
+// The layers of the advanced glTF materials on the CPU: the same functions with the same names as
+// shaders/include/gltf_extensions.glsl (KHR_materials_ior, _specular, _clearcoat, _sheen,
+// _emissive_strength), so tests can integrate them and compare the shaders with them.
+#include <glm/glm.hpp>
+
+namespace pbr::cpu {
+
+// KHR_materials_ior: ((ior - 1) / (ior + 1))^2.
+float iorToF0(float ior);
+
+// KHR_materials_specular: F0 = min(iorToF0(ior) specularColor, 1) specular, F90 = specular.
+struct DielectricFresnel {
+    glm::vec3 F0{0.04f};
+    float F90 = 1.0f;
+};
+DielectricFresnel dielectricFresnel(float ior, const glm::vec3& specularColor, float specular);
+
+// KHR_materials_clearcoat: the coat's Fresnel F0 + (1 - F0)(1 - NdotV)^5 at its normal, its GGX
+// lobe for one light times NdotL (D V NdotL, alpha = roughness^2), and the mix of the layer
+// beneath with the coat's light by clearcoat x that Fresnel.
+float clearcoatFresnel(float F0, float NdotV);
+float clearcoatDirect(const glm::vec3& coatN, const glm::vec3& V, const glm::vec3& L,
+                      float roughness);
+glm::vec3 coatOver(const glm::vec3& base, const glm::vec3& coat, float coatWeight);
+
+// KHR_materials_sheen: the Charlie distribution and visibility (alpha = sheenRoughness^2), the
+// lobe for one light times NdotL, and what the layer beneath keeps.
+float D_Charlie(float NdotH, float alpha);
+float charlieL(float x, float alpha);
+float lambdaSheen(float cosTheta, float alpha);
+float V_Sheen(float NdotL, float NdotV, float alpha);
+constexpr float kMinSheenAlpha = 1e-6f;  // MIN_SHEEN_ALPHA of gltf_extensions.glsl
+glm::vec3 sheenDirect(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                      const glm::vec3& sheenColor, float sheenRoughness);
+float max3(const glm::vec3& v);
+float sheenAlbedoScaling(const glm::vec3& sheenColor, float albedoAtV, float albedoAtL);
+// The directional albedo of a white sheen (the table the albedo scaling reads): the integral of
+// D_Charlie V_Sheen NdotL over light directions, by numerical quadrature (integrateOverLights).
+double sheenAlbedoQuadrature(double NdotV, double sheenRoughness);
+
+// KHR_materials_emissive_strength, seen through the clear coat: emissive strength (1 - coatWeight).
+glm::vec3 emission(const glm::vec3& emissive, float strength, float coatWeight);
+
+}  // namespace pbr::cpu
