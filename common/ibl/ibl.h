@@ -73,7 +73,8 @@ double prefilterNormalization(double roughness);
 // The BRDF lookup table, `size`^2: x = NdotV, y = roughness, both sampled at texel centres
 // ((i + 0.5) / size), row 0 at t = 0 (roughness near 0); `samples` Hammersley points.
 // ScaleBias: RG16F, R = scale and G = bias to F0 of the split-sum GGX integral.
-// ScaleBiasSheen: RGBA16F, and B = the cookbook's Charlie sheen integral (A = 1).
+// ScaleBiasSheen: RGBA16F, and B = the cookbook's Charlie sheen integral (Ashikhmin's
+// visibility), A = the same with the sheen specification's Charlie visibility (V_Sheen).
 enum class BrdfLutChannels { ScaleBias, ScaleBiasSheen };
 Texture2D computeBrdfLut(int size, int samples = 1024,
                          BrdfLutChannels channels = BrdfLutChannels::ScaleBias);

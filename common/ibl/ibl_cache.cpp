@@ -320,7 +320,7 @@ LutTexel lutTexel(const KtxImage& lut, float u, float v) {
         std::memcpy(&value, texel + 4 * c, 4);
         return value;
     };
-    return {channel(0), channel(1), channel(2)};
+    return {channel(0), channel(1), channel(2), channel(3)};
 }
 
 KtxFormat brdfLutFormat(BrdfLutChannels channels) {
@@ -338,7 +338,9 @@ MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels) {
             "BRDF LUT " + std::to_string(size) + "^2, " + std::to_string(samples) +
                 " samples; x = NdotV, y = roughness at texel centres; R = GGX scale, G = GGX "
                 "bias to F0" +
-                (sheen ? ", B = Charlie sheen" : ""),
+                (sheen ? ", B = Charlie sheen (Ashikhmin visibility), A = Charlie sheen (Charlie "
+                         "visibility)"
+                       : ""),
             key};
 }
 

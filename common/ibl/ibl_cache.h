@@ -126,6 +126,7 @@ KtxFormat brdfLutFormat(BrdfLutChannels channels);
 // split sum's scale and bias, and the sheen where the table has it (else 0).
 struct LutTexel {
     float scale = 0.0f, bias = 0.0f, sheen = 0.0f;
+    float sheenAlbedo = 0.0f;  // A: the sheen's albedo with Charlie's visibility
 };
 LutTexel lutTexel(const KtxImage& lut, float u, float v);
 

@@ -89,10 +89,11 @@ int main(int argc, char** argv) try {
                 const float v = 1.0f - (cursor->y - float(top)) / float(side);
                 if (u < 0.0f || u >= 1.0f || v < 0.0f || v >= 1.0f) continue;
                 const pbr::LutTexel texel = pbr::lutTexel(lutImage, u, v);
-                char text[160];
+                char text[200];
                 std::snprintf(text, sizeof text,
-                              "NdotV %.3f, roughness %.3f\nscale %.4f, bias %.4f, sheen %.4f", u,
-                              v, texel.scale, texel.bias, texel.sheen);
+                              "NdotV %.3f, roughness %.3f\nscale %.4f, bias %.4f, sheen %.4f "
+                              "(with Charlie's visibility %.4f)",
+                              u, v, texel.scale, texel.bias, texel.sheen, texel.sheenAlbedo);
                 app.label(*cursor + glm::vec2(0.0f, 36.0f), text);
             }
         }

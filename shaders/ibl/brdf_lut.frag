@@ -4,8 +4,12 @@
 // Unreal Engine 4"), by GGX importance sampling; B (when `sheen` is on) = the directional albedo
 // of Charlie sheen (Estevez and Kulla's distribution with alpha = roughness^2, Ashikhmin's
 // visibility), the term of the cookbook's "precompute BRDF LUT" recipe, by Charlie importance
-// sampling divided by its density (the cookbook's estimator leaves the density out). Checked
-// against a numerical quadrature on the CPU (pbr::cpu::splitSumQuadrature, sheenQuadrature).
+// sampling divided by its density (the cookbook's estimator leaves the density out); A (with B) =
+// the same albedo with the sheen specification's own visibility (V_Sheen, Charlie's), what the
+// albedo scaling of a sheen layer reads (sample 10; Ashikhmin's albedo is up to 0.3 too high for
+// smooth sheen and 0.2 too low for rough, so scaling by B would gain or lose light). Checked
+// against a numerical quadrature on the CPU (pbr::cpu::splitSumQuadrature, sheenQuadrature,
+// sheenAlbedoQuadrature).
 out vec4 FragColor;
 in vec2 TexCoords;
 
@@ -13,6 +17,7 @@ uniform int sampleCount;
 uniform bool sheen;
 
 #include "importance_sampling.glsl"
+#include "gltf_extensions.glsl"
 
 // Schlick-GGX with k = roughness^2 / 2, the remapping for image-based lighting.
 float geometrySmithIbl(float NdotV, float NdotL, float roughness)
@@ -63,13 +68,14 @@ vec3 importanceSampleCharlie(vec2 Xi, float roughness)
     return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
 }
 
-// The sheen's directional albedo, the integral of D V NdotL over light directions. A sample's
-// light direction has density D NdotH / (4 VdotH); D divides out of the estimate, leaving
-// V NdotL 4 VdotH / NdotH.
-float integrateSheen(float NdotV, float roughness)
+// The sheen's directional albedo, the integral of D V NdotL over light directions, with
+// Ashikhmin's visibility (x) and with Charlie's (y). A sample's light direction has density
+// D NdotH / (4 VdotH); D divides out of the estimate, leaving V NdotL 4 VdotH / NdotH.
+vec2 integrateSheen(float NdotV, float roughness)
 {
     vec3 V = vec3(sqrt(1.0 - NdotV * NdotV), 0.0, NdotV);
-    float sum = 0.0;
+    float alpha = max(roughness * roughness, MIN_SHEEN_ALPHA);
+    vec2 sum = vec2(0.0);
     uint count = uint(sampleCount);
     for (uint i = 0u; i < count; ++i)
     {
@@ -79,7 +85,8 @@ float integrateSheen(float NdotV, float roughness)
         float NdotH = H.z;
         float VdotH = dot(V, H);
         if (NdotL > 0.0 && NdotH > 0.0)
-            sum += V_Ashikhmin(NdotL, NdotV) * NdotL * 4.0 * VdotH / NdotH;
+            sum += vec2(V_Ashikhmin(NdotL, NdotV), V_Sheen(NdotL, NdotV, alpha)) * NdotL * 4.0 *
+                   VdotH / NdotH;
     }
     return sum / float(count);
 }
@@ -88,6 +95,6 @@ void main()
 {
     float NdotV = TexCoords.x;
     float roughness = TexCoords.y;
-    FragColor = vec4(integrateBRDF(NdotV, roughness), sheen ? integrateSheen(NdotV, roughness) : 0.0,
-                     1.0);
+    FragColor = vec4(integrateBRDF(NdotV, roughness),
+                     sheen ? integrateSheen(NdotV, roughness) : vec2(0.0, 1.0));
 }

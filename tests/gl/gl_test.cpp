@@ -260,39 +260,46 @@ TEST(Gl, IrradianceOfKnownEnvironments) {
 }
 
 // The BRDF LUT (1024 Hammersley samples on the GPU) against the CPU's numerical quadrature of the
-// same integrals (pbr::cpu::splitSumQuadrature, sheenQuadrature: no sampling), at 64 texels spread
-// over the table; texel (x, y) must hold NdotV = (x + 0.5) / N and roughness = (y + 0.5) / N, the
-// orientation the renderer reads. All three channels within 0.01 (the estimates' noise at 1024
-// samples, and half floats).
+// same integrals (pbr::cpu::splitSumQuadrature, sheenQuadrature, sheenAlbedoQuadrature: no
+// sampling), at 64 texels spread over the table; texel (x, y) must hold NdotV = (x + 0.5) / N and
+// roughness = (y + 0.5) / N, the orientation the renderer reads. All four channels within 0.01
+// (the estimates' noise at 1024 samples, and half floats).
 TEST(Gl, BrdfLutMatchesACpuIntegration) {
     const fs::path dir = test::testOutputDir("gl_brdf_lut");
     App app = makeApp(dir);
     constexpr int kSize = 64;
     const Texture2D lut = computeBrdfLut(kSize, 1024, BrdfLutChannels::ScaleBiasSheen);
     const std::vector<float> texels = lut.readFloats(4);
-    double worst = 0.0, worstSheen = 0.0, largestSheen = 0.0;
+    double worst = 0.0, worstSheen = 0.0, largestSheen = 0.0, worstAlbedo = 0.0, largestAlbedo = 0.0;
     for (int y = 3; y < kSize; y += 8) {
         for (int x = 3; x < kSize; x += 8) {
             const double NdotV = (x + 0.5) / kSize, roughness = (y + 0.5) / kSize;
             const glm::dvec2 cpu = cpu::splitSumQuadrature(NdotV, roughness);
             const double sheen = cpu::sheenQuadrature(NdotV, roughness);
+            const double albedo = cpu::sheenAlbedoQuadrature(NdotV, roughness);
             const size_t i = (size_t(y) * kSize + size_t(x)) * 4;
             worst = std::max({worst, std::abs(texels[i] - cpu.x), std::abs(texels[i + 1] - cpu.y)});
             worstSheen = std::max(worstSheen, std::abs(texels[i + 2] - sheen));
             largestSheen = std::max(largestSheen, sheen);
+            worstAlbedo = std::max(worstAlbedo, std::abs(texels[i + 3] - albedo));
+            largestAlbedo = std::max(largestAlbedo, albedo);
             EXPECT_NEAR(texels[i], cpu.x, 0.01)
                 << "scale at NdotV " << NdotV << ", roughness " << roughness;
             EXPECT_NEAR(texels[i + 1], cpu.y, 0.01)
                 << "bias at NdotV " << NdotV << ", roughness " << roughness;
             EXPECT_NEAR(texels[i + 2], sheen, 0.01)
                 << "sheen at NdotV " << NdotV << ", roughness " << roughness;
+            EXPECT_NEAR(texels[i + 3], albedo, 0.01)
+                << "sheen albedo (Charlie's visibility) at NdotV " << NdotV << ", roughness "
+                << roughness;
         }
     }
     std::printf(
         "BRDF LUT: worst difference from the CPU quadrature %.5f (R, G), "
-        "%.5f (B, largest value %.4f)\n",
-        worst, worstSheen, largestSheen);
-    EXPECT_GT(largestSheen, 0.3);  // the comparison above is not between two zeros
+        "%.5f (B, largest value %.4f), %.5f (A, largest value %.4f)\n",
+        worst, worstSheen, largestSheen, worstAlbedo, largestAlbedo);
+    EXPECT_GT(largestSheen, 0.3);  // the comparisons above are not between two zeros
+    EXPECT_GT(largestAlbedo, 0.3);
     // smooth and head-on: almost all of F0 comes back (scale near 1, bias near 0)
     const size_t corner = (size_t(0) * kSize + size_t(kSize - 1)) * 4;
     EXPECT_GT(texels[corner], 0.9f);
