@@ -196,7 +196,7 @@ GltfBrdf gltfBrdf(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
     const float VdotH = std::clamp(glm::dot(V, H), 0.0f, 1.0f);
     const float alpha = std::max(s.roughness * s.roughness, kMinGgxAlpha);
     const float schlick = std::pow(1.0f - VdotH, 5.0f);
-    const glm::vec3 dielectricF = s.F0 + (1.0f - s.F0) * schlick;
+    const glm::vec3 dielectricF = s.F0 + (s.F90 - s.F0) * schlick;
     const glm::vec3 metalF = s.metalColor + (1.0f - s.metalColor) * schlick;
     b.D = D_GGX(NdotH, alpha);
     b.Vis = V_GGX(b.NdotL, b.NdotV, alpha);
@@ -213,25 +213,29 @@ glm::vec3 gltfDirectLight(const glm::vec3& N, const glm::vec3& V, const glm::vec
     return (b.diffuse + b.specular) * radiance * b.NdotL;
 }
 
+glm::vec3 specularIblF90(const glm::vec3& F0, float F90, const SplitSumReads& reads,
+                         bool multipleScattering, glm::vec3& albedo) {
+    const glm::vec2 scaleBias = reads.envBRDF;
+    const glm::vec3 single = F0 * scaleBias.x + F90 * scaleBias.y;
+    glm::vec3 multiple(0.0f);
+    if (multipleScattering) {
+        const float lost = 1.0f - (scaleBias.x + scaleBias.y);
+        const glm::vec3 averageF = F0 + (F90 - F0) / 21.0f;
+        multiple = lost * averageF * single / (1.0f - averageF * lost);
+    }
+    albedo = single + multiple;
+    return single * reads.prefilteredColor + multiple * reads.irradiance;
+}
+
 GltfAmbient gltfAmbient(const GltfSurface& s, const glm::vec3& irradiance,
                         const glm::vec3& prefiltered, const glm::vec2& scaleBias,
                         bool multipleScattering) {
-    // what a lobe of reflectance F0 returns, and the share of the light it takes
-    auto lobe = [&](const glm::vec3& F0, glm::vec3& share) {
-        const glm::vec3 single = F0 * scaleBias.x + scaleBias.y;
-        glm::vec3 multiple(0.0f);
-        if (multipleScattering) {
-            const float lost = 1.0f - (scaleBias.x + scaleBias.y);
-            const glm::vec3 averageF = F0 + (1.0f - F0) / 21.0f;
-            multiple = lost * averageF * single / (1.0f - averageF * lost);
-        }
-        share = single + multiple;
-        return single * prefiltered + multiple * irradiance;
-    };
+    const SplitSumReads reads{0.0f, irradiance, prefiltered, scaleBias};
     GltfAmbient ambient;
     glm::vec3 dielectricShare, metalShare;
-    ambient.dielectricSpecular = lobe(s.F0, dielectricShare);
-    ambient.metal = lobe(s.metalColor, metalShare);
+    ambient.dielectricSpecular =
+        specularIblF90(s.F0, s.F90, reads, multipleScattering, dielectricShare);
+    ambient.metal = specularIblF90(s.metalColor, 1.0f, reads, multipleScattering, metalShare);
     ambient.diffuse = s.diffuseColor * irradiance * (1.0f - dielectricShare);
     return ambient;
 }

@@ -129,6 +129,7 @@ struct GltfSurface {
     float roughness = 0.5f;  // perceptual
     glm::vec3 metalColor{0.0f};
     float metallic = 0.0f;
+    float F90 = 1.0f;  // the dielectric's grazing reflectance (KHR_materials_specular's strength)
 };
 // The metallic-roughness workflow: c_diff = metalColor = base colour, F0 = 0.04.
 GltfSurface metallicRoughnessSurface(const glm::vec3& position, const glm::vec3& normal,
@@ -158,6 +159,17 @@ GltfBrdf gltfBrdf(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
 // radiance; with multiple scattering (Fdez-Aguera, JCGT 2019) also
 // E_ms = (1 - scale - bias) F_avg E_ss / (1 - F_avg (1 - scale - bias)) of the irradiance,
 // F_avg = F0 + (1 - F0) / 21; the dielectric's diffuse layer gets 1 - (E_ss + E_ms) of its lobe.
+// The split sum's three reads at one surface point (ibl_ambient.glsl's SplitSumReads).
+struct SplitSumReads {
+    float NdotV = 1.0f;
+    glm::vec3 irradiance{0.0f};        // at N
+    glm::vec3 prefilteredColor{0.0f};  // along R, at the roughness's level
+    glm::vec2 envBRDF{0.0f};           // the LUT's (scale, bias)
+};
+// What a lobe of reflectance F0 (head-on) to F90 (grazing) returns of the environment, and in
+// `albedo` the share of the light it takes (ibl_ambient.glsl's specularIblF90).
+glm::vec3 specularIblF90(const glm::vec3& F0, float F90, const SplitSumReads& reads,
+                         bool multipleScattering, glm::vec3& albedo);
 struct GltfAmbient {
     glm::vec3 diffuse{0.0f};
     glm::vec3 dielectricSpecular{0.0f};

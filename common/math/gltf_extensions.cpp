@@ -96,4 +96,38 @@ glm::vec3 emission(const glm::vec3& emissive, float strength, float coatWeight) 
     return emissive * strength * (1.0f - coatWeight);
 }
 
+glm::vec3 layeredDirectLight(const LayeredSurface& s, const glm::vec3& V, const glm::vec3& L,
+                             const glm::vec3& radiance, float sheenAlbedoAtV,
+                             float sheenAlbedoAtL) {
+    glm::vec3 base(0.0f);
+    if (glm::dot(s.N, L) > 0.0f) {
+        const GltfSurface surface{glm::vec3(0.0f), s.N,          s.diffuseColor, s.F0,
+                                  s.roughness,     s.metalColor, s.metallic,     s.F90};
+        const GltfBrdf b = gltfBrdf(s.N, V, L, surface);
+        base = (b.diffuse + b.specular) * radiance * b.NdotL;  // gltfDirectLight's, to the bit
+    }
+    const glm::vec3 sheened =
+        sheenDirect(s.N, V, L, s.sheenColor, s.sheenRoughness) * radiance +
+        base * sheenAlbedoScaling(s.sheenColor, sheenAlbedoAtV, sheenAlbedoAtL);
+    const float coatWeight = s.clearcoat * clearcoatFresnel(s.clearcoatF0, glm::dot(s.clearcoatN, V));
+    const glm::vec3 coat = clearcoatDirect(s.clearcoatN, V, L, s.clearcoatRoughness) * radiance;
+    return coatOver(sheened, coat, coatWeight);
+}
+
+glm::vec3 layeredAmbientLight(const LayeredSurface& s, const SplitSumReads& base,
+                              const SplitSumReads& coat, const glm::vec3& sheenRadiance,
+                              float sheenAlbedoAtV, bool multipleScattering) {
+    glm::vec3 dielectricAlbedo, metalAlbedo;
+    const glm::vec3 dielectricSpecular =
+        specularIblF90(s.F0, s.F90, base, multipleScattering, dielectricAlbedo);
+    const glm::vec3 metal = specularIblF90(s.metalColor, 1.0f, base, multipleScattering, metalAlbedo);
+    const glm::vec3 diffuse = s.diffuseColor * base.irradiance * (1.0f - dielectricAlbedo);
+    const glm::vec3 core = glm::mix(diffuse + dielectricSpecular, metal, s.metallic);
+    const glm::vec3 sheened = s.sheenColor * sheenRadiance * sheenAlbedoAtV +
+                              core * (1.0f - max3(s.sheenColor) * sheenAlbedoAtV);
+    const float coatWeight = s.clearcoat * clearcoatFresnel(s.clearcoatF0, coat.NdotV);
+    const glm::vec3 coatLight = coat.prefilteredColor * (coat.envBRDF.x + coat.envBRDF.y);
+    return coatOver(sheened, coatLight, coatWeight);
+}
+
 }  // namespace pbr::cpu

@@ -4,6 +4,8 @@
 // _emissive_strength), so tests can integrate them and compare the shaders with them.
 #include <glm/glm.hpp>
 
+#include "math/brdf.h"
+
 namespace pbr::cpu {
 
 // KHR_materials_ior: ((ior - 1) / (ior + 1))^2.
@@ -41,5 +43,33 @@ double sheenAlbedoQuadrature(double NdotV, double sheenRoughness);
 
 // KHR_materials_emissive_strength, seen through the clear coat: emissive strength (1 - coatWeight).
 glm::vec3 emission(const glm::vec3& emissive, float strength, float coatWeight);
+
+// The layers together (gltf_extensions.glsl's LayeredSurface): the core material's surface with
+// the dielectric's F0 and F90, the sheen over it, the clear coat over both.
+struct LayeredSurface {
+    glm::vec3 N{0.0f, 0.0f, 1.0f};
+    glm::vec3 diffuseColor{1.0f};
+    glm::vec3 F0{0.04f};
+    float F90 = 1.0f;
+    glm::vec3 metalColor{1.0f};
+    float metallic = 0.0f;
+    float roughness = 0.5f;
+    glm::vec3 sheenColor{0.0f};
+    float sheenRoughness = 0.0f;
+    float clearcoat = 0.0f;
+    float clearcoatRoughness = 0.0f;
+    glm::vec3 clearcoatN{0.0f, 0.0f, 1.0f};
+    float clearcoatF0 = 0.04f;
+};
+// Radiance towards V from one light: the base lobes scaled by what the sheen leaves, plus the
+// sheen, then the coat mixed over it all; the sheen's albedo at V and at L from its table.
+glm::vec3 layeredDirectLight(const LayeredSurface& s, const glm::vec3& V, const glm::vec3& L,
+                             const glm::vec3& radiance, float sheenAlbedoAtV,
+                             float sheenAlbedoAtL);
+// The layers' image-based light before occlusion, from the split sum's reads at the base and at
+// the coat, the sheen's prefiltered radiance and its albedo at V.
+glm::vec3 layeredAmbientLight(const LayeredSurface& s, const SplitSumReads& base,
+                              const SplitSumReads& coat, const glm::vec3& sheenRadiance,
+                              float sheenAlbedoAtV, bool multipleScattering);
 
 }  // namespace pbr::cpu

@@ -17,7 +17,7 @@ uniform int sampleCount;
 uniform bool sheen;
 
 #include "importance_sampling.glsl"
-#include "gltf_extensions.glsl"
+#include "sheen.glsl"
 
 // Schlick-GGX with k = roughness^2 / 2, the remapping for image-based lighting.
 float geometrySmithIbl(float NdotV, float NdotL, float roughness)

@@ -121,6 +121,8 @@ const float MIN_GGX_ALPHA = 0.002;
 // The terms of the glTF BRDF for one light direction L, as gltfDirectLight combines them (the
 // term views show them apart): D, the visibility Vis = G / (4 NdotL NdotV), F of the dielectric
 // and metal mixed, the diffuse and specular lobes (before radiance and NdotL), NdotL and NdotV.
+// The dielectric's Fresnel runs from F0 head-on to F90 at grazing angles: 1 in the core material,
+// KHR_materials_specular's strength in sample 10 (gltf_extensions.glsl, dielectricFresnel).
 struct GltfBrdf
 {
     float D;
@@ -132,8 +134,8 @@ struct GltfBrdf
     float NdotV;
 };
 
-GltfBrdf gltfBrdf(vec3 N, vec3 V, vec3 L, vec3 diffuseColor, vec3 F0, vec3 metalColor,
-                  float metallic, float roughness)
+GltfBrdf gltfBrdfF90(vec3 N, vec3 V, vec3 L, vec3 diffuseColor, vec3 F0, float F90,
+                     vec3 metalColor, float metallic, float roughness)
 {
     GltfBrdf b;
     b.NdotL = clamp(dot(N, L), 0.0, 1.0);
@@ -143,7 +145,7 @@ GltfBrdf gltfBrdf(vec3 N, vec3 V, vec3 L, vec3 diffuseColor, vec3 F0, vec3 metal
     float VdotH = clamp(dot(V, H), 0.0, 1.0);
     float alpha = max(roughness * roughness, MIN_GGX_ALPHA);
     float schlick = pow(1.0 - VdotH, 5.0);
-    vec3 dielectricF = F0 + (1.0 - F0) * schlick;
+    vec3 dielectricF = F0 + (F90 - F0) * schlick;
     vec3 metalF = metalColor + (1.0 - metalColor) * schlick;
     b.D = D_GGX(NdotH, alpha);
     b.Vis = V_GGX(b.NdotL, b.NdotV, alpha);
@@ -151,6 +153,12 @@ GltfBrdf gltfBrdf(vec3 N, vec3 V, vec3 L, vec3 diffuseColor, vec3 F0, vec3 metal
     b.diffuse = (1.0 - metallic) * (1.0 - dielectricF) * diffuseColor / PI;
     b.specular = b.F * b.D * b.Vis;
     return b;
+}
+
+GltfBrdf gltfBrdf(vec3 N, vec3 V, vec3 L, vec3 diffuseColor, vec3 F0, vec3 metalColor,
+                  float metallic, float roughness)
+{
+    return gltfBrdfF90(N, V, L, diffuseColor, F0, 1.0, metalColor, metallic, roughness);
 }
 
 // Radiance towards V from light arriving along L with `radiance`, for a surface given as its

@@ -1,7 +1,8 @@
 // The layers of the advanced glTF materials (sample 10; the cookbook's chapter "Advanced PBR
 // extensions"), each as its Khronos extension specifies it, written once. Mirrored on the CPU by
 // common/math/gltf_extensions.cpp (same names), which the tests compare against and integrate.
-// Needs brdf.glsl first (PI, D_GGX, V_GGX, MIN_GGX_ALPHA).
+// Needs brdf.glsl first (PI, D_GGX, V_GGX, MIN_GGX_ALPHA, gltfBrdfF90); the layered image-based
+// light at the end also needs ibl_ambient.glsl (SplitSumReads, specularIblF90).
 
 // ---- KHR_materials_ior ----
 // A dielectric's reflectance at normal incidence in air, from its index of refraction:
@@ -58,45 +59,11 @@ vec3 coatOver(vec3 base, vec3 coat, float coatWeight)
 }
 
 // ---- KHR_materials_sheen ----
-// A layer of fibres over the material (Conty Estevez and Kulla, "Production Friendly Microfacet
-// Sheen BRDF", 2017): the "Charlie" distribution and its visibility, both with alpha =
-// sheenRoughness^2, no Fresnel. The layer beneath is scaled by what the sheen takes from it
-// (albedo scaling): 1 - max(sheenColor) E, E the sheen's directional albedo at the view and at
-// the light (the smaller of the two), read from a table (the BRDF LUT's sheen channel).
-float D_Charlie(float NdotH, float alpha)
-{
-    float invAlpha = 1.0 / alpha;
-    float sin2h = max(1.0 - NdotH * NdotH, 0.0);
-    return (2.0 + invAlpha) * pow(sin2h, invAlpha * 0.5) / (2.0 * PI);
-}
-
-// The curve fit of the Charlie shadowing's exponent (its lambda), at cosine x.
-float charlieL(float x, float alpha)
-{
-    float t = (1.0 - alpha) * (1.0 - alpha);
-    float a = mix(21.5473, 25.3245, t);
-    float b = mix(3.82987, 3.32435, t);
-    float c = mix(0.19823, 0.16801, t);
-    float d = mix(-1.97760, -1.27393, t);
-    float e = mix(-4.32054, -4.85967, t);
-    return a / (1.0 + b * pow(x, c)) + d * x + e;
-}
-
-float lambdaSheen(float cosTheta, float alpha)
-{
-    return abs(cosTheta) < 0.5 ? exp(charlieL(cosTheta, alpha))
-                               : exp(2.0 * charlieL(0.5, alpha) - charlieL(1.0 - cosTheta, alpha));
-}
-
-// The Charlie visibility, G / (4 NdotL NdotV), at most 1.
-float V_Sheen(float NdotL, float NdotV, float alpha)
-{
-    float g = 1.0 + lambdaSheen(NdotV, alpha) + lambdaSheen(NdotL, alpha);
-    return clamp(1.0 / (g * 4.0 * NdotV * NdotL), 0.0, 1.0);
-}
-
-// Sheen roughness 0 would make the distribution a spike at the horizon: alpha stays above this.
-const float MIN_SHEEN_ALPHA = 1e-6;
+// A layer of fibres over the material: the Charlie lobe (sheen.glsl), no Fresnel. The layer
+// beneath is scaled by what the sheen takes from it (albedo scaling): 1 - max(sheenColor) E, E the
+// sheen's directional albedo at the view and at the light (the smaller of the two), read from a
+// table (the BRDF LUT's A channel).
+#include "sheen.glsl"
 
 // The sheen lobe for one light, times NdotL (radiance 1): sheenColor D V NdotL.
 vec3 sheenDirect(vec3 N, vec3 V, vec3 L, vec3 sheenColor, float sheenRoughness)
@@ -128,4 +95,67 @@ float sheenAlbedoScaling(vec3 sheenColor, float albedoAtV, float albedoAtL)
 vec3 emission(vec3 emissive, float strength, float coatWeight)
 {
     return emissive * strength * (1.0 - coatWeight);
+}
+
+// ---- The layers together ----
+// A surface of the advanced material at one point: the core material's (Appendix B, with the
+// dielectric's F0 and F90 of ior and specular), the sheen over it and the clear coat over both.
+// Without the extensions (clearcoat 0, sheenColor 0, ior 1.5, specular 1) it is the core's.
+struct LayeredSurface
+{
+    vec3 N;
+    vec3 diffuseColor;
+    vec3 F0;
+    float F90;
+    vec3 metalColor;
+    float metallic;
+    float roughness;
+    vec3 sheenColor;
+    float sheenRoughness;
+    float clearcoat;
+    float clearcoatRoughness;
+    vec3 clearcoatN;
+    float clearcoatF0;
+};
+
+// Radiance towards V from light arriving along L with `radiance`: the base lobes, scaled by what
+// the sheen leaves of them, plus the sheen; then the coat mixed over it all. The sheen's albedo
+// at the view and at the light comes from its table (the caller reads it).
+vec3 layeredDirectLight(LayeredSurface s, vec3 V, vec3 L, vec3 radiance, float sheenAlbedoAtV,
+                        float sheenAlbedoAtL)
+{
+    vec3 base = vec3(0.0);
+    if (dot(s.N, L) > 0.0)
+    {
+        GltfBrdf b = gltfBrdfF90(s.N, V, L, s.diffuseColor, s.F0, s.F90, s.metalColor, s.metallic,
+                                 s.roughness);
+        base = (b.diffuse + b.specular) * radiance * b.NdotL;  // gltfDirectLight's, to the bit
+    }
+    vec3 sheened = sheenDirect(s.N, V, L, s.sheenColor, s.sheenRoughness) * radiance +
+                   base * sheenAlbedoScaling(s.sheenColor, sheenAlbedoAtV, sheenAlbedoAtL);
+    float coatWeight = s.clearcoat * clearcoatFresnel(s.clearcoatF0, dot(s.clearcoatN, V));
+    vec3 coat = clearcoatDirect(s.clearcoatN, V, L, s.clearcoatRoughness) * radiance;
+    return coatOver(sheened, coat, coatWeight);
+}
+
+// The image-based light of the layers, before occlusion: the base's split sum (ambientLightGltf's,
+// with F90); the sheen, the environment prefiltered by its lobe times its albedo at the view,
+// over the base scaled by what the sheen leaves; the coat's lobe, the environment prefiltered at
+// its roughness along its reflection times the lobe's albedo (scale + bias: its Fresnel is the
+// mix's), mixed over it all. `base` and `coat` are the split sum's reads at the base's normal and
+// roughness and at the coat's.
+vec3 layeredAmbientLight(LayeredSurface s, SplitSumReads base, SplitSumReads coat,
+                         vec3 sheenRadiance, float sheenAlbedoAtV)
+{
+    vec3 dielectricAlbedo, metalAlbedo, dielectricMultiple, metalMultiple;
+    vec3 dielectricSpecular =
+        specularIblF90(s.F0, s.F90, base, dielectricAlbedo, dielectricMultiple);
+    vec3 metal = specularIblF90(s.metalColor, 1.0, base, metalAlbedo, metalMultiple);
+    vec3 diffuse = s.diffuseColor * base.irradiance * (1.0 - dielectricAlbedo);
+    vec3 core = mix(diffuse + dielectricSpecular, metal, s.metallic);
+    vec3 sheened = s.sheenColor * sheenRadiance * sheenAlbedoAtV +
+                   core * (1.0 - max3(s.sheenColor) * sheenAlbedoAtV);
+    float coatWeight = s.clearcoat * clearcoatFresnel(s.clearcoatF0, coat.NdotV);
+    vec3 coatLight = coat.prefilteredColor * (coat.envBRDF.x + coat.envBRDF.y);
+    return coatOver(sheened, coatLight, coatWeight);
 }

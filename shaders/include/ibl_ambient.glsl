@@ -128,22 +128,27 @@ vec3 ambientLight(vec3 N, vec3 V, vec3 albedo, float metallic, float roughness, 
 // in a white furnace returns the environment exactly, at every roughness.
 uniform bool multipleScattering;
 
-// The radiance a lobe of reflectance F0 returns: single-scattered from the prefiltered
-// environment, multiple-scattered (when on) from the irradiance; `albedo` gets the whole share,
-// `multipleRadiance` the multiple-scattered radiance alone.
-vec3 specularIbl(vec3 F0, SplitSumReads s, out vec3 albedo, out vec3 multipleRadiance)
+// The radiance a lobe of reflectance F0 (head-on) to F90 (grazing) returns: single-scattered
+// from the prefiltered environment, multiple-scattered (when on) from the irradiance; `albedo`
+// gets the whole share, `multipleRadiance` the multiple-scattered radiance alone.
+vec3 specularIblF90(vec3 F0, float F90, SplitSumReads s, out vec3 albedo, out vec3 multipleRadiance)
 {
-    vec3 single = F0 * s.envBRDF.x + s.envBRDF.y;
+    vec3 single = F0 * s.envBRDF.x + F90 * s.envBRDF.y;
     vec3 multiple = vec3(0.0);
     if (multipleScattering)
     {
         float lost = 1.0 - (s.envBRDF.x + s.envBRDF.y);
-        vec3 averageF = F0 + (1.0 - F0) / 21.0;
+        vec3 averageF = F0 + (F90 - F0) / 21.0;
         multiple = lost * averageF * single / (1.0 - averageF * lost);
     }
     albedo = single + multiple;
     multipleRadiance = multiple * s.irradiance;
     return single * s.prefilteredColor + multipleRadiance;
+}
+
+vec3 specularIbl(vec3 F0, SplitSumReads s, out vec3 albedo, out vec3 multipleRadiance)
+{
+    return specularIblF90(F0, 1.0, s, albedo, multipleRadiance);
 }
 
 // The glTF image-based light's parts before occlusion and the reads they come from: the

@@ -1117,6 +1117,7 @@ TEST(Gl, GltfExtensionLayersMatchTheCpu) {
     const fs::path fragment = dir / "layers.frag";
     writeFileAtomically(fragment, R"(#version 330 core
 #include "brdf.glsl"
+#include "ibl_ambient.glsl"
 #include "gltf_extensions.glsl"
 out vec4 FragColor;
 uniform sampler2D directions;
@@ -1140,21 +1141,48 @@ void main()
         FragColor = vec4(sheenDirect(N, V, L, sheenColor, roughness), iorToF0(ior));
     else if (row == 2)
         FragColor = vec4(f.F0, f.F90);
-    else
+    else if (row == 3)
         FragColor = vec4(clearcoatFresnel(iorToF0(ior), V.z), sheenAlbedoScaling(sheenColor, V.z, L.z),
                          coatOver(vec3(L.z), vec3(V.z), roughness).x, emission(sheenColor, 4.0, roughness).y);
+    else
+    {
+        LayeredSurface s;
+        s.N = normalize(vec3(0.1, -0.2, 1.0));
+        s.diffuseColor = vec3(0.8, 0.3, 0.2);
+        s.F0 = f.F0;
+        s.F90 = f.F90;
+        s.metalColor = vec3(0.9, 0.6, 0.3);
+        s.metallic = 0.5 * roughness;
+        s.roughness = roughness;
+        s.sheenColor = vec3(0.5, 0.4, 0.9);
+        s.sheenRoughness = 1.0 - 0.5 * roughness;
+        s.clearcoat = 0.8;
+        s.clearcoatRoughness = 0.5 * roughness;
+        s.clearcoatN = N;
+        s.clearcoatF0 = iorToF0(ior);
+        SplitSumReads base = SplitSumReads(dot(s.N, V), vec3(0.5, 0.6, 0.7), vec3(2.0, 1.5, 1.0) * L.z,
+                                           vec2(0.6, 0.1) * V.z);
+        SplitSumReads coat = SplitSumReads(V.z, vec3(0.0), vec3(1.0, 2.0, 3.0) * L.z, vec2(0.7, 0.05));
+        if (row == 4)
+            FragColor = vec4(layeredDirectLight(s, V, L, vec3(1.0, 0.8, 0.6), 0.5 * V.z, 0.5 * L.z), 0.0);
+        else
+            FragColor = vec4(layeredAmbientLight(s, base, coat, vec3(0.3, 0.2, 0.1), 0.5 * V.z), 0.0);
+    }
 }
 )");
     Shader shader(shaderDir() / "ibl/fullscreen.vert", fragment);
-    constexpr int kRows = 4;
+    constexpr int kRows = 6;
     const TestTarget target(kCount, kRows, GL_RGBA32F, false, "layers target");
     glDisable(GL_DEPTH_TEST);
     shader.set("directions", 0);
+    shader.set("multipleScattering", true);
     inputTexture.bind(0);
     const GpuMesh quad(pbr::quad());
     const glm::vec3 N(0.0f, 0.0f, 1.0f), sheenColor(1.0f, 0.5f, 0.25f);
     std::array<std::array<double, 4>, kRows> worst{};
-    auto tolerance = [](int row, int c) { return (row == 0 && c < 2) || (row == 1 && c < 3) ? 5e-3 : 1e-4; };
+    auto tolerance = [](int row, int c) {
+        return (row == 0 && c < 2) || (row == 1 && c < 3) || row == 4 ? 5e-3 : 1e-4;
+    };
     for (const float roughness : {0.05f, 0.3f, 0.7f, 1.0f}) {
         shader.set("roughness", roughness);
         quad.draw();
@@ -1167,6 +1195,25 @@ void main()
             const cpu::DielectricFresnel f =
                 cpu::dielectricFresnel(ior, sheenColor * 20.0f, roughness);
             const glm::vec3 sheen = cpu::sheenDirect(N, V, L, sheenColor, roughness);
+            cpu::LayeredSurface s;
+            s.N = glm::normalize(glm::vec3(0.1f, -0.2f, 1.0f));
+            s.diffuseColor = glm::vec3(0.8f, 0.3f, 0.2f);
+            s.F0 = f.F0;
+            s.F90 = f.F90;
+            s.metalColor = glm::vec3(0.9f, 0.6f, 0.3f);
+            s.metallic = 0.5f * roughness;
+            s.roughness = roughness;
+            s.sheenColor = glm::vec3(0.5f, 0.4f, 0.9f);
+            s.sheenRoughness = 1.0f - 0.5f * roughness;
+            s.clearcoat = 0.8f;
+            s.clearcoatRoughness = 0.5f * roughness;
+            s.clearcoatN = N;
+            s.clearcoatF0 = cpu::iorToF0(ior);
+            const cpu::SplitSumReads base{glm::dot(s.N, V), glm::vec3(0.5f, 0.6f, 0.7f),
+                                          glm::vec3(2.0f, 1.5f, 1.0f) * L.z,
+                                          glm::vec2(0.6f, 0.1f) * V.z};
+            const cpu::SplitSumReads coat{V.z, glm::vec3(0.0f), glm::vec3(1.0f, 2.0f, 3.0f) * L.z,
+                                          glm::vec2(0.7f, 0.05f)};
             const std::array<glm::vec4, kRows> expected = {
                 glm::vec4(cpu::clearcoatDirect(N, V, L, roughness), cpu::D_Charlie(NdotH, alpha),
                           cpu::V_Sheen(L.z, V.z, alpha), cpu::lambdaSheen(V.z, alpha)),
@@ -1175,7 +1222,13 @@ void main()
                 glm::vec4(cpu::clearcoatFresnel(cpu::iorToF0(ior), V.z),
                           cpu::sheenAlbedoScaling(sheenColor, V.z, L.z),
                           cpu::coatOver(glm::vec3(L.z), glm::vec3(V.z), roughness).x,
-                          cpu::emission(sheenColor, 4.0f, roughness).y)};
+                          cpu::emission(sheenColor, 4.0f, roughness).y),
+                glm::vec4(cpu::layeredDirectLight(s, V, L, glm::vec3(1.0f, 0.8f, 0.6f), 0.5f * V.z,
+                                                  0.5f * L.z),
+                          0.0f),
+                glm::vec4(cpu::layeredAmbientLight(s, base, coat, glm::vec3(0.3f, 0.2f, 0.1f),
+                                                   0.5f * V.z, true),
+                          0.0f)};
             for (int row = 0; row < kRows; ++row) {
                 for (int c = 0; c < 4; ++c) {
                     const float gpu = pixels[(size_t(row) * kCount + size_t(i)) * 4 + size_t(c)];

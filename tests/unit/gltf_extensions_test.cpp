@@ -134,6 +134,83 @@ TEST(GltfExtensions, AWhiteBaseUnderAWhiteSheenNeverReflectsMoreThanArrives) {
     }
 }
 
+// A white surface under every layer at once (a white sheen, a full clear coat over a white
+// Lambertian base: KHR_materials_specular 0, for Appendix B's own base reflects up to 27 % more
+// than arrives at grazing views, smooth at NdotV 0.2, its diffuse weighted by 1 - F of each half
+// vector), lit by a white environment of radiance 1: the layers' image-based light, from the
+// split sum's reads made by quadrature (the LUT's scale and bias, the sheen's albedo), never
+// exceeds 1, with multiple scattering and without; and one light integrated over every direction
+// of arrival neither.
+TEST(GltfExtensions, AWhiteLayeredSurfaceInAWhiteFurnaceNeverReflectsMoreThanArrives) {
+    for (const float roughness : {0.2f, 0.6f, 1.0f}) {
+        LayeredSurface s;
+        s.diffuseColor = glm::vec3(1.0f);
+        s.F0 = glm::vec3(0.0f);
+        s.F90 = 0.0f;
+        s.roughness = roughness;
+        s.sheenColor = glm::vec3(1.0f);
+        s.sheenRoughness = 1.0f - 0.5f * roughness;
+        s.clearcoat = 1.0f;
+        s.clearcoatRoughness = 0.5f * roughness;
+        const SheenAlbedoTable sheenTable(s.sheenRoughness);
+        for (const double NdotV : {0.2, 0.6, 1.0}) {
+            const float atV = float(sheenTable.at(NdotV));
+            SplitSumReads base{float(NdotV), glm::vec3(1.0f), glm::vec3(1.0f),
+                               glm::vec2(splitSumQuadrature(NdotV, roughness))};
+            SplitSumReads coat{float(NdotV), glm::vec3(1.0f), glm::vec3(1.0f),
+                               glm::vec2(splitSumQuadrature(NdotV, s.clearcoatRoughness))};
+            for (const bool multiple : {false, true}) {
+                const glm::vec3 ambient =
+                    layeredAmbientLight(s, base, coat, glm::vec3(1.0f), atV, multiple);
+                EXPECT_LE(ambient.x, 1.0f + 1e-3f) << "roughness " << roughness << ", NdotV "
+                                                    << NdotV << ", multiple " << multiple;
+                EXPECT_GE(ambient.x, 0.5f) << "roughness " << roughness << ", NdotV " << NdotV;
+            }
+            const double alpha = std::max(double(roughness) * roughness, double(kMinGgxAlpha));
+            const double direct =
+                integrateOverLights(NdotV, alpha, [&](const glm::dvec3& V, const glm::dvec3& L) {
+                    return double(layeredDirectLight(s, glm::vec3(V), glm::vec3(L),
+                                                     glm::vec3(1.0f), atV,
+                                                     float(sheenTable.at(L.z)))
+                                      .x);
+                });
+            std::printf("roughness %.1f, NdotV %.1f: one light over every direction %.4f\n",
+                        double(roughness), NdotV, direct);
+            EXPECT_LE(direct, 1.0 + 2e-3) << "roughness " << roughness << ", NdotV " << NdotV;
+        }
+    }
+}
+
+// Without the extensions' layers (no sheen, no coat, ior 1.5 and specular 1) the layered light
+// is the core material's, to the bit: sample 10 draws a plain material as 07 does.
+TEST(GltfExtensions, WithoutLayersTheLightIsTheCoreMaterials) {
+    const glm::vec3 N = glm::normalize(glm::vec3(0.2f, 0.1f, 1.0f));
+    const glm::vec3 V = glm::normalize(glm::vec3(-0.3f, 0.2f, 1.0f));
+    const glm::vec3 L = glm::normalize(glm::vec3(0.5f, -0.4f, 0.8f));
+    const DielectricFresnel fresnel = dielectricFresnel(1.5f, glm::vec3(1.0f), 1.0f);
+    for (const float metallic : {0.0f, 0.5f, 1.0f}) {
+        LayeredSurface s;
+        s.N = N;
+        s.clearcoatN = N;
+        s.diffuseColor = s.metalColor = glm::vec3(0.8f, 0.4f, 0.1f);
+        s.F0 = fresnel.F0;
+        s.F90 = fresnel.F90;
+        s.metallic = metallic;
+        s.roughness = 0.4f;
+        const GltfSurface core =
+            metallicRoughnessSurface(glm::vec3(0.0f), N, s.diffuseColor, metallic, 0.4f);
+        const glm::vec3 radiance(2.0f, 1.5f, 1.0f);
+        EXPECT_EQ(layeredDirectLight(s, V, L, radiance, 0.3f, 0.2f),
+                  gltfDirectLight(N, V, L, radiance, core));
+        const SplitSumReads reads{glm::dot(N, V), glm::vec3(0.5f, 0.6f, 0.7f),
+                                  glm::vec3(1.2f, 0.9f, 0.4f), glm::vec2(0.6f, 0.1f)};
+        const GltfAmbient ambient =
+            gltfAmbient(core, reads.irradiance, reads.prefilteredColor, reads.envBRDF, true);
+        EXPECT_EQ(layeredAmbientLight(s, reads, reads, glm::vec3(3.0f), 0.3f, true),
+                  glm::mix(ambient.diffuse + ambient.dielectricSpecular, ambient.metal, metallic));
+    }
+}
+
 // The emission is as bright as its strength says, and the coat's reflected share of it is lost.
 TEST(GltfExtensions, EmissionIsScaledByItsStrengthOnceAndDimmedByTheCoat) {
     const glm::vec3 emitted = emission(glm::vec3(0.5f, 1.0f, 0.0f), 4.0f, 0.25f);
