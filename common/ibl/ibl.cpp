@@ -149,6 +149,38 @@ double prefilterNormalization(double roughness) {
 
 namespace {
 
+// The sheen map's weight at L's angle theta from N (N = V): D_Charlie(H) N.L, H halfway between,
+// times the ring's circumference, 2 pi sin(theta).
+double sheenRingWeight(double theta, double alpha) {
+    const double cosH = std::cos(theta / 2.0), sin2h = std::max(1.0 - cosH * cosH, 0.0);
+    const double D = (2.0 + 1.0 / alpha) * std::pow(sin2h, 0.5 / alpha) / (2.0 * std::numbers::pi);
+    return D * std::cos(theta) * 2.0 * std::numbers::pi * std::sin(theta);
+}
+
+// Angles from N spaced geometrically towards the horizon: u = pi/2 - theta runs from
+// `lowest` to pi/2 in `count` equal steps of log u (midpoints); returns (theta, d theta) pairs.
+std::vector<std::pair<double, double>> horizonRings(int count, double lowest) {
+    const double halfPi = std::numbers::pi / 2.0, step = std::log(halfPi / lowest) / count;
+    std::vector<std::pair<double, double>> rings;
+    for (int i = 0; i < count; ++i) {
+        const double u = lowest * std::exp((i + 0.5) * step);
+        rings.emplace_back(halfPi - u, u * step);  // du = u d(log u)
+    }
+    return rings;
+}
+
+}  // namespace
+
+double sheenPrefilterNormalization(double sheenRoughness) {
+    const double alpha = std::max(sheenRoughness * sheenRoughness, 1e-6);
+    double sum = 0.0;
+    for (const auto& [theta, width] : horizonRings(1 << 16, 1e-4 * alpha))
+        sum += sheenRingWeight(theta, alpha) * width;
+    return sum;
+}
+
+namespace {
+
 // Hands a convolution shader the bright texels (shaders/include/bright_texels.glsl).
 void useBrightTexels(Shader& shader, const SplitEnvironment& split) {
     shader.set("brightCount", int(split.bright.size()));
@@ -196,6 +228,41 @@ TextureCube prefilterSpecular(const TextureCube& environment, int size, int leve
         renderCubeFaces(shader, prefiltered, level);
     }
     return prefiltered;
+}
+
+TextureCube prefilterSheen(const TextureCube& environment, int size, int levels, int taps) {
+    const SplitEnvironment split = splitBrightTexels(environment);
+    const SavedGlState saved;
+    TextureCube sheen(size, levels, environment.internalFormat());
+    Shader shader("ibl/cubemap.vert", "ibl/prefilter_sheen.frag");
+    readFrom(shader, split.rest);
+    useBrightTexels(shader, split);
+    shader.set("ringTaps", taps);
+    shader.set("ringCount", kSheenPrefilterRings);
+    const double texelSolidAngle =
+        4.0 * std::numbers::pi / (6.0 * double(split.rest.size()) * split.rest.size());
+    for (int level = 0; level < levels; ++level) {
+        const double roughness = std::max(
+            levels > 1 ? double(level) / double(levels - 1) : 0.0, double(kMinSheenMapRoughness));
+        const double alpha = roughness * roughness;
+        // rings from a twentieth of the lobe's distance from the horizon (2 alpha) upwards
+        const auto rings = horizonRings(kSheenPrefilterRings, 0.1 * alpha);
+        double total = 0.0;
+        for (const auto& [theta, width] : rings) total += sheenRingWeight(theta, alpha) * width;
+        for (size_t i = 0; i < rings.size(); ++i) {
+            const auto& [theta, width] = rings[i];
+            const std::string index = std::to_string(i) + "]";
+            shader.set("ringCos[" + index, float(std::cos(theta)));
+            shader.set("ringWeight[" + index, float(sheenRingWeight(theta, alpha) * width / total));
+            const double footprint = 2.0 * std::numbers::pi * std::sin(theta) / taps * width;
+            shader.set("ringLod[" + index,
+                       float(std::max(0.5 * std::log2(footprint / texelSolidAngle), 0.0)));
+        }
+        shader.set("alpha", float(alpha));
+        shader.set("lobeNormalization", float(sheenPrefilterNormalization(roughness)));
+        renderCubeFaces(shader, sheen, level);
+    }
+    return sheen;
 }
 
 Texture2D computeBrdfLut(int size, int samples, BrdfLutChannels channels) {

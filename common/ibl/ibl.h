@@ -70,6 +70,21 @@ TextureCube prefilterSpecular(const TextureCube& environment, int size = 128, in
 // V and L): what the prefiltered map's weights add up to at `roughness`. 1 at roughness 1.
 double prefilterNormalization(double roughness);
 
+// The environment prefiltered by the sheen's lobe (KHR_materials_sheen's Charlie distribution,
+// alpha = sheenRoughness^2; sample 10's image-based sheen): `size`^2 faces, `levels` mip levels,
+// level m for sheen roughness max(m / (levels - 1), kMinSheenMapRoughness), each texel the average
+// of the environment weighted by D_Charlie(H) N.L with N = V. The weight depends on L's angle from
+// N alone and gathers near the horizon, so it is summed by a fixed rule: kSheenPrefilterRings
+// rings of `taps` reads each, at angles spaced geometrically towards the horizon; the bright
+// texels exactly, as prefilterSpecular does.
+inline constexpr int kSheenPrefilterRings = 32;  // prefilter_sheen.frag's MAX_RINGS
+inline constexpr float kMinSheenMapRoughness = 0.1f;  // at 0 the lobe is a line on the horizon
+TextureCube prefilterSheen(const TextureCube& environment, int size = 32, int levels = 5,
+                           int taps = 32);
+// The integral of D_Charlie(H) N.L over the directions L with N.L > 0 when N = V: what the sheen
+// map's weights add up to at `sheenRoughness`.
+double sheenPrefilterNormalization(double sheenRoughness);
+
 // The BRDF lookup table, `size`^2: x = NdotV, y = roughness, both sampled at texel centres
 // ((i + 0.5) / size), row 0 at t = 0 (roughness near 0); `samples` Hammersley points.
 // ScaleBias: RG16F, R = scale and G = bias to F0 of the split-sum GGX integral.
