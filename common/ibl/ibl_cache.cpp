@@ -283,6 +283,22 @@ MapFile IblEnvironment::prefilteredFile(int size, int levels, int samples) const
                            std::to_string(samples) + " samples");
 }
 
+MapFile IblEnvironment::sheenFile(int size, int levels) const {
+    return cubeMapFile(hdr_.stem().string() + ".sheen.ktx",
+                       "sheen " + std::to_string(size) + " levels " + std::to_string(levels) +
+                           "; shaders " +
+                           shaderCodeHash("ibl/cubemap.vert", "ibl/prefilter_sheen.frag") +
+                           "; from " + environmentKey_,
+                       "Charlie-prefiltered sheen cube map, " + std::to_string(size) +
+                           "^2, mip m for sheen roughness max(m / " + std::to_string(levels - 1) +
+                           ", 0.1)");
+}
+
+TextureCube IblEnvironment::sheenMap(int size, int levels) {
+    return cache_.cube(sheenFile(size, levels),
+                       [&] { return prefilterSheen(environmentMap(), size, levels); });
+}
+
 const TextureCube& IblEnvironment::environmentMap() {
     if (!environment_) {
         environment_ = cache_.cube(environmentFile(), [&] {

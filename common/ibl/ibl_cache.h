@@ -86,11 +86,14 @@ public:
     const TextureCube& environmentMap();  // 512^2, RGB16F, full mip chain
     TextureCube irradianceMap(int size = 32, float sampleDelta = kIrradianceSampleDelta);
     TextureCube prefilteredMap(int size = 128, int levels = 5, int samples = kPrefilterSamples);
+    // prefiltered by the sheen's lobe (prefilterSheen): sample 10's image-based sheen
+    TextureCube sheenMap(int size = 32, int levels = 5);
 
     // What each map is as a file (see MapFile): 06 writes the maps under these names.
     MapFile environmentFile() const;
     MapFile irradianceFile(int size = 32, float sampleDelta = kIrradianceSampleDelta) const;
     MapFile prefilteredFile(int size = 128, int levels = 5, int samples = kPrefilterSamples) const;
+    MapFile sheenFile(int size = 32, int levels = 5) const;
 
 private:
     IblCache& cache_;

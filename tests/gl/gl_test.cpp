@@ -1281,6 +1281,33 @@ void main()
     }
 }
 
+// The sheen map goes through the cache as the other maps do: computed once and stored under its
+// name, then loaded by the next start, the same texels, nothing computed.
+TEST(Gl, SheenMapIsStoredAndLoadedBack) {
+    const fs::path dir = test::testOutputDir("gl_sheen_cache");
+    App app = makeApp(dir);
+    const fs::path cacheDir = dir / "cache", hdr = environmentDir() / "sunny_courtyard.hdr";
+    fs::remove_all(cacheDir);
+    std::vector<float> first;
+    {
+        IblCache cache(cacheDir);
+        IblEnvironment environment(cache, hdr);
+        first = environment.sheenMap(16, 3).readFace(2, 1);
+        EXPECT_GT(cache.computeSeconds(), 0.0);
+        EXPECT_TRUE(fs::exists(cacheDir / environment.sheenFile(16, 3).name));
+    }
+    {
+        IblCache cache(cacheDir);
+        IblEnvironment environment(cache, hdr);
+        EXPECT_TRUE(environment.sheenMap(16, 3).readFace(2, 1) == first);
+        EXPECT_EQ(cache.computeSeconds(), 0.0);
+    }
+    ASSERT_FALSE(first.empty());
+    EXPECT_GT(*std::max_element(first.begin(), first.end()), 0.05f) << "a black sheen map";
+    while (app.nextFrame()) {
+    }
+}
+
 // The IBL passes and the skybox change framebuffers, viewport, depth and culling state, the
 // program and texture bindings; each must hand the caller's state back as it found it.
 TEST(Gl, IblPassesLeaveTheCallersStateAlone) {
