@@ -3,54 +3,130 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "base/error.h"
 
 namespace pbr {
 
 namespace {
 
 enum Unit { kBaseColor = 0, kMetallicRoughness = 1, kNormal = 2, kOcclusion = 3, kEmissive = 4 };
-constexpr int kUnits = 5;
+
+// The samplers of each layer, in the order their units follow the IBL maps'.
+struct LayerSampler {
+    const char* layer;
+    const char* sampler;
+};
+constexpr LayerSampler kLayerSamplers[] = {
+    {"CLEARCOAT", "clearcoatTexture"},    {"CLEARCOAT", "clearcoatRoughnessTexture"},
+    {"CLEARCOAT", "clearcoatNormalTexture"}, {"SHEEN", "sheenColorTexture"},
+    {"SHEEN", "sheenRoughnessTexture"},   {"SHEEN", "sheenLUT"},
+    {"SHEEN", "sheenMap"},                {"SPECULAR", "khrSpecularTexture"},
+    {"SPECULAR", "khrSpecularColorTexture"}};
+
+bool has(const std::vector<std::string>& layers, const std::string& layer) {
+    return std::find(layers.begin(), layers.end(), layer) != layers.end();
+}
+
+// The unit of `sampler` in a program of `layers` (-1: not in it).
+int layerUnit(const std::vector<std::string>& layers, const std::string& sampler) {
+    int unit = GltfRenderer::kFirstLayerUnit;
+    for (const LayerSampler& entry : kLayerSamplers) {
+        if (!has(layers, entry.layer)) continue;
+        if (sampler == entry.sampler) return unit;
+        ++unit;
+    }
+    return -1;
+}
 
 }  // namespace
 
-GltfRenderer::GltfRenderer(Shader& shader)
-    : shader_(shader), white_(Image{1, 1, 4, {255, 255, 255, 255}}, ColorSpace::Linear) {
-    shader_.set("baseColorTexture", int(kBaseColor));
-    shader_.set("metallicRoughnessTexture", int(kMetallicRoughness));
-    shader_.set("specularGlossinessTexture", int(kMetallicRoughness));  // one workflow a material
-    shader_.set("normalTexture", int(kNormal));
-    shader_.set("occlusionTexture", int(kOcclusion));
-    shader_.set("emissiveTexture", int(kEmissive));
-    shader_.set("irradianceMap", kFirstIblUnit);
-    shader_.set("prefilterMap", kFirstIblUnit + 1);
-    shader_.set("brdfLUT", kFirstIblUnit + 2);
-    shader_.set("environmentMap", kFirstIblUnit + 3);
-    setLights({});
+std::vector<std::string> materialLayers(const Material& m) {
+    std::vector<std::string> layers;
+    if (m.clearcoat.factor > 0.0f) layers.push_back("CLEARCOAT");
+    if (std::max({m.sheen.colorFactor.r, m.sheen.colorFactor.g, m.sheen.colorFactor.b}) > 0.0f)
+        layers.push_back("SHEEN");
+    if (m.khrSpecular.texture.present() || m.khrSpecular.colorTexture.present())
+        layers.push_back("SPECULAR");
+    const bool factors = m.ior != 1.5f || m.khrSpecular.factor != 1.0f ||
+                         m.khrSpecular.colorFactor != glm::vec3(1.0f) || m.emissiveStrength != 1.0f;
+    if (!layers.empty() || factors) layers.insert(layers.begin(), "GLTF_EXTENSIONS");
+    return layers;
 }
 
-int GltfRenderer::setLights(std::span<const PunctualLight> lights) {
+GltfRenderer::GltfRenderer(ProgramFor programFor)
+    : programFor_(std::move(programFor)),
+      white_(Image{1, 1, 4, {255, 255, 255, 255}}, ColorSpace::Linear) {}
+
+GltfRenderer::GltfRenderer(ProgramFor programFor, const TextureCube* sheenMap,
+                           const Texture2D* sheenLut)
+    : GltfRenderer(std::move(programFor)) {
+    extensions_ = true;
+    sheenMap_ = sheenMap;
+    sheenLut_ = sheenLut;
+}
+
+void GltfRenderer::setUnits(Shader& program, const std::vector<std::string>& layers) const {
+    program.set("baseColorTexture", int(kBaseColor));
+    program.set("metallicRoughnessTexture", int(kMetallicRoughness));
+    program.set("specularGlossinessTexture", int(kMetallicRoughness));  // one workflow a material
+    program.set("normalTexture", int(kNormal));
+    program.set("occlusionTexture", int(kOcclusion));
+    program.set("emissiveTexture", int(kEmissive));
+    program.set("irradianceMap", kFirstIblUnit);
+    program.set("prefilterMap", kFirstIblUnit + 1);
+    program.set("brdfLUT", kFirstIblUnit + 2);
+    program.set("environmentMap", kFirstIblUnit + 3);
+    for (const LayerSampler& entry : kLayerSamplers) {
+        if (has(layers, entry.layer)) program.set(entry.sampler, layerUnit(layers, entry.sampler));
+    }
+}
+
+int GltfRenderer::setLights(Shader& program, std::span<const PunctualLight> lights) {
     const int count = std::min(int(lights.size()), kMaxLights);
-    shader_.set("punctualLightCount", count);
+    program.set("punctualLightCount", count);
     for (int i = 0; i < count; ++i) {
         const PunctualLight& light = lights[size_t(i)];
         const std::string at = "punctualLights[" + std::to_string(i) + "].";
-        shader_.set(at + "type", int(light.type));
-        shader_.set(at + "color", light.color);
-        shader_.set(at + "position", light.position);
-        shader_.set(at + "direction", light.direction);
-        shader_.set(at + "range", light.range);
-        shader_.set(at + "innerConeCos", std::cos(light.innerConeAngle));
-        shader_.set(at + "outerConeCos", std::cos(light.outerConeAngle));
+        program.set(at + "type", int(light.type));
+        program.set(at + "color", light.color);
+        program.set(at + "position", light.position);
+        program.set(at + "direction", light.direction);
+        program.set(at + "range", light.range);
+        program.set(at + "innerConeCos", std::cos(light.innerConeAngle));
+        program.set(at + "outerConeCos", std::cos(light.outerConeAngle));
     }
     return int(lights.size()) - count;
 }
 
-void GltfRenderer::setMaterial(const GpuModel& model, const Material& m) {
+Shader& GltfRenderer::programFor(const Material& material, const SetFrame& setFrame) {
+    const std::vector<std::string> layers =
+        extensions_ ? materialLayers(material) : std::vector<std::string>();
+    Shader& program = programFor_(layers);
+    program.use();
+    if (std::find(prepared_.begin(), prepared_.end(), &program) == prepared_.end()) {
+        setUnits(program, layers);
+        setFrame(program);
+        prepared_.push_back(&program);
+    }
+    if (has(layers, "SHEEN")) {
+        if (!sheenMap_ || !sheenLut_) throw Error("a sheen drawn without the sheen's maps");
+        sheenLut_->bind(layerUnit(layers, "sheenLUT"));
+        sheenMap_->bind(layerUnit(layers, "sheenMap"));
+    }
+    return program;
+}
+
+void GltfRenderer::setMaterial(Shader& program, const GpuModel& model, const Material& m) {
+    const std::vector<std::string> layers =
+        extensions_ ? materialLayers(m) : std::vector<std::string>();
     auto slot = [&](const char* name, const TextureRef& ref, ColorSpace colorSpace, int unit) {
+        largestUnit_ = std::max(largestUnit_, unit);
         const bool own = model.bindTexture(ref, colorSpace, unit, white_);
-        shader_.set(std::string(name) + "UvSet", own ? ref.uvSet : 0);
-        shader_.set(std::string(name) + "UvTransform", own ? ref.transform : glm::mat3(1.0f));
+        program.set(std::string(name) + "UvSet", own ? ref.uvSet : 0);
+        program.set(std::string(name) + "UvTransform", own ? ref.transform : glm::mat3(1.0f));
         return own;
     };
     slot("baseColor", m.baseColorTexture, ColorSpace::Srgb, kBaseColor);
@@ -62,25 +138,60 @@ void GltfRenderer::setMaterial(const GpuModel& model, const Material& m) {
         slot("metallicRoughness", m.metallicRoughnessTexture, ColorSpace::Linear,
              kMetallicRoughness);
     }
-    shader_.set("hasNormalTexture",
+    program.set("hasNormalTexture",
                 slot("normal", m.normalTexture, ColorSpace::Linear, kNormal) ? 1 : 0);
     slot("occlusion", m.occlusionTexture, ColorSpace::Linear, kOcclusion);
     slot("emissive", m.emissiveTexture, ColorSpace::Srgb, kEmissive);
-    shader_.set("baseColorFactor", m.baseColorFactor);
-    shader_.set("metallicFactor", m.metallicFactor);
-    shader_.set("roughnessFactor", m.roughnessFactor);
-    shader_.set("specularGlossiness", m.specularGlossiness ? 1 : 0);
-    shader_.set("specularFactor", m.specularFactor);
-    shader_.set("glossinessFactor", m.glossinessFactor);
-    shader_.set("normalScale", m.normalScale);
-    shader_.set("occlusionStrength", m.occlusionStrength);
-    shader_.set("emissiveFactor", m.emissiveFactor);
-    shader_.set("alphaMode", int(m.alphaMode));
-    shader_.set("alphaCutoff", m.alphaCutoff);
-    shader_.set("unlit", m.unlit ? 1 : 0);
+    program.set("baseColorFactor", m.baseColorFactor);
+    program.set("metallicFactor", m.metallicFactor);
+    program.set("roughnessFactor", m.roughnessFactor);
+    program.set("specularGlossiness", m.specularGlossiness ? 1 : 0);
+    program.set("specularFactor", m.specularFactor);
+    program.set("glossinessFactor", m.glossinessFactor);
+    program.set("normalScale", m.normalScale);
+    program.set("occlusionStrength", m.occlusionStrength);
+    program.set("emissiveFactor", m.emissiveFactor);
+    program.set("alphaMode", int(m.alphaMode));
+    program.set("alphaCutoff", m.alphaCutoff);
+    program.set("unlit", m.unlit ? 1 : 0);
+    if (layers.empty()) return;
+    program.set("ior", m.ior);
+    program.set("khrSpecularFactor", m.khrSpecular.factor);
+    program.set("khrSpecularColorFactor", m.khrSpecular.colorFactor);
+    program.set("emissiveStrength", m.emissiveStrength);
+    if (has(layers, "CLEARCOAT")) {
+        program.set("clearcoatFactor", m.clearcoat.factor);
+        program.set("clearcoatRoughnessFactor", m.clearcoat.roughnessFactor);
+        program.set("clearcoatNormalScale", m.clearcoat.normalScale);
+        slot("clearcoat", m.clearcoat.texture, ColorSpace::Linear,
+             layerUnit(layers, "clearcoatTexture"));
+        slot("clearcoatRoughness", m.clearcoat.roughnessTexture, ColorSpace::Linear,
+             layerUnit(layers, "clearcoatRoughnessTexture"));
+        program.set("hasClearcoatNormalTexture",
+                    slot("clearcoatNormal", m.clearcoat.normalTexture, ColorSpace::Linear,
+                         layerUnit(layers, "clearcoatNormalTexture"))
+                        ? 1
+                        : 0);
+    }
+    if (has(layers, "SHEEN")) {
+        program.set("sheenColorFactor", m.sheen.colorFactor);
+        program.set("sheenRoughnessFactor", m.sheen.roughnessFactor);
+        slot("sheenColor", m.sheen.colorTexture, ColorSpace::Srgb,
+             layerUnit(layers, "sheenColorTexture"));
+        slot("sheenRoughness", m.sheen.roughnessTexture, ColorSpace::Linear,
+             layerUnit(layers, "sheenRoughnessTexture"));
+        largestUnit_ = std::max(largestUnit_, layerUnit(layers, "sheenMap"));
+    }
+    if (has(layers, "SPECULAR")) {
+        slot("khrSpecular", m.khrSpecular.texture, ColorSpace::Linear,
+             layerUnit(layers, "khrSpecularTexture"));
+        slot("khrSpecularColor", m.khrSpecular.colorTexture, ColorSpace::Srgb,
+             layerUnit(layers, "khrSpecularColorTexture"));
+    }
 }
 
-void GltfRenderer::drawPrimitive(const GpuModel::Primitive& primitive, const glm::mat4& world) {
+void GltfRenderer::drawPrimitive(Shader& program, const GpuModel::Primitive& primitive,
+                                 const glm::mat4& world) {
     const glm::mat4 transform = world * primitive.transform;
     if (primitive.material.doubleSided) {
         glDisable(GL_CULL_FACE);
@@ -89,20 +200,23 @@ void GltfRenderer::drawPrimitive(const GpuModel::Primitive& primitive, const glm
     }
     // glTF: a node transform with a negative determinant turns the winding around.
     glFrontFace(glm::determinant(glm::mat3(transform)) < 0.0f ? GL_CW : GL_CCW);
-    shader_.setModel(transform);
+    program.setModel(transform);
     primitive.mesh.draw();
 }
 
-void GltfRenderer::draw(const GpuModel& model, const glm::mat4& world, const glm::mat4& view) {
-    shader_.use();
+void GltfRenderer::draw(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,
+                        const SetFrame& setFrame) {
+    prepared_.clear();
+    largestUnit_ = kEmissive;
     std::vector<const GpuModel::Primitive*> blended;
     for (const GpuModel::Primitive& primitive : model.primitives()) {
         if (primitive.material.alphaMode == AlphaMode::Blend) {
             blended.push_back(&primitive);
             continue;
         }
-        setMaterial(model, primitive.material);
-        drawPrimitive(primitive, world);
+        Shader& program = programFor(primitive.material, setFrame);
+        setMaterial(program, model, primitive.material);
+        drawPrimitive(program, primitive, world);
     }
     // Blended primitives last, the farthest first (by the centre of their bounds, in view
     // space), over what is drawn, without writing depth so none hides another.
@@ -116,15 +230,16 @@ void GltfRenderer::draw(const GpuModel& model, const glm::mat4& world, const glm
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
         for (const GpuModel::Primitive* primitive : blended) {
-            setMaterial(model, primitive->material);
-            drawPrimitive(*primitive, world);
+            Shader& program = programFor(primitive->material, setFrame);
+            setMaterial(program, model, primitive->material);
+            drawPrimitive(program, *primitive, world);
         }
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
     }
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
-    GpuModel::unbindSamplers(kUnits);
+    GpuModel::unbindSamplers(largestUnit_ + 1);
 }
 
 PunctualLight defaultLight(float lux) {

@@ -4,8 +4,19 @@
 // their samplers on units 0-4, and the order and state glTF asks for: opaque and masked
 // primitives first, then the blended ones back to front without depth writes; back faces culled
 // unless the material is double-sided; the winding flipped under a mirroring node transform.
-// Shared by the glTF samples (07, 08); the IBL maps (units 5-7) and the camera are the sample's.
+// Shared by the glTF samples (07, 08, 10); the IBL maps (units 5-8) and the camera are the
+// sample's, set on each program by the frame's callback.
+//
+// The core material (07, 08) is drawn by one program. The advanced material (sample 10) by one
+// program a set of layers: a material's layers (materialLayers: GLTF_EXTENSIONS, and CLEARCOAT,
+// SHEEN, SPECULAR for those it uses) are #defines, so a layer's code and textures are compiled
+// only into the programs of the materials that use it, and a material without extensions gets
+// the core material's program. Each layer's textures take the units after the IBL maps', in that
+// order (layerUnits).
+#include <functional>
 #include <span>
+#include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -16,26 +27,53 @@
 
 namespace pbr {
 
+// The #defines of the advanced material's layers `material` uses: empty for the core material
+// alone; else GLTF_EXTENSIONS (ior, KHR_materials_specular's factors, emissive strength) and
+// CLEARCOAT (a clear coat of factor above 0), SHEEN (a sheen colour other than black), SPECULAR
+// (KHR_materials_specular's textures).
+std::vector<std::string> materialLayers(const Material& material);
+
 class GltfRenderer {
 public:
     static constexpr int kMaxLights = 8;  // MAX_PUNCTUAL_LIGHTS of punctual_lights.glsl
     // The split-sum maps' units (pbr::useIblMaps(shader, ..., kFirstIblUnit)): set even when no
     // maps are bound, so no two sampler types ever share a unit.
     static constexpr int kFirstIblUnit = 5;
+    static constexpr int kFirstLayerUnit = kFirstIblUnit + 4;
 
-    explicit GltfRenderer(Shader& shader);
+    // The program for a set of layers' #defines (empty: the core material's).
+    using ProgramFor = std::function<Shader&(const std::vector<std::string>& layers)>;
+    // What the frame sets on a program before its first primitive of a draw: the camera, the
+    // lights, the IBL maps' units.
+    using SetFrame = std::function<void(Shader&)>;
 
-    // Uploads up to kMaxLights lights; returns how many were left out.
-    int setLights(std::span<const PunctualLight> lights);
+    // Draws the core material (07, 08): every primitive with `programFor({})`.
+    explicit GltfRenderer(ProgramFor programFor);
+    // Draws the advanced material's layers too (sample 10), with the sheen's maps: its
+    // prefiltered environment (IblEnvironment::sheenMap) and the LUT whose A is its albedo.
+    GltfRenderer(ProgramFor programFor, const TextureCube* sheenMap, const Texture2D* sheenLut);
+
+    // Sets a program's texture units for its layers (draw does, for each program it uses).
+    void setUnits(Shader& program, const std::vector<std::string>& layers) const;
+    // Uploads up to kMaxLights lights to `program`; returns how many were left out.
+    static int setLights(Shader& program, std::span<const PunctualLight> lights);
     // Draws every primitive of `model`, placed by `world` x its node transform.
-    void draw(const GpuModel& model, const glm::mat4& world, const glm::mat4& view);
+    void draw(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,
+              const SetFrame& setFrame);
 
 private:
-    void setMaterial(const GpuModel& model, const Material& material);
-    void drawPrimitive(const GpuModel::Primitive& primitive, const glm::mat4& world);
+    Shader& programFor(const Material& material, const SetFrame& setFrame);
+    void setMaterial(Shader& program, const GpuModel& model, const Material& material);
+    void drawPrimitive(Shader& program, const GpuModel::Primitive& primitive,
+                       const glm::mat4& world);
 
-    Shader& shader_;
+    ProgramFor programFor_;
+    bool extensions_ = false;
+    const TextureCube* sheenMap_ = nullptr;
+    const Texture2D* sheenLut_ = nullptr;
     Texture2D white_;
+    std::vector<Shader*> prepared_;  // the programs of this draw, units and frame set
+    int largestUnit_ = 0;            // the highest unit a draw bound, unbound after it
 };
 
 // One light for files that bring none: a white directional light of `lux`, from above the

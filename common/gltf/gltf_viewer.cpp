@@ -112,8 +112,14 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     std::optional<IblCache> cache;
     std::optional<SplitSumMaps> maps;
     Skybox skybox;
-    // A renderer for each program a view needs (it sets the program's texture units).
-    std::map<const Shader*, std::unique_ptr<GltfRenderer>> renderers;
+    // The program of the frame's view (its #defines) for a material's layers.
+    std::vector<std::string> viewDefinitions;
+    auto programFor = [&](const std::vector<std::string>& layers) -> Shader& {
+        std::vector<std::string> defines = viewDefinitions;
+        defines.insert(defines.end(), layers.begin(), layers.end());
+        return app.shader("common/gltf.vert", "common/gltf.frag", defines);
+    };
+    GltfRenderer renderer(programFor);
 
     glEnable(GL_DEPTH_TEST);
     int saidAlone = 0;  // the --light K past the file's lights last said so (once a value)
@@ -123,9 +129,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         const int toneMapper = int(*cpu::toneMapperFromName(app.flagChoice("--tonemap")));
         const float exposure = app.flagNumber("--exposure");
         const View view = viewNamed(app.flagChoice("--view"));
-        Shader& shader = app.shader("common/gltf.vert", "common/gltf.frag", viewDefines(view));
-        std::unique_ptr<GltfRenderer>& renderer = renderers[&shader];
-        if (!renderer) renderer = std::make_unique<GltfRenderer>(shader);
+        viewDefinitions = viewDefines(view);
         // --light K: that light alone (none where the file has fewer)
         const int alone = app.flagInt("--light");
         std::span<const PunctualLight> shown = punctual ? lights : std::span<const PunctualLight>();
@@ -140,7 +144,6 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
                          lights.size() == 1 ? "" : "s");
         }
         saidAlone = alone > 0 && size_t(alone) > lights.size() ? alone : 0;
-        renderer->setLights(shown);
         // Made again after R: the cache's keys hold the shaders' code, so an edited IBL shader
         // is computed anew.
         if (ibl && (!cache || app.shadersReloaded())) {
@@ -153,24 +156,27 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         // Without the environment, a dark grey background (linear; the target encodes it); a view
         // on its neutral grey, without the sky.
         app.clearFrame(view, glm::vec3(0.02f));
-        shader.use();
-        shader.set("projection", app.projection());
-        shader.set("view", app.view());
-        shader.set("camPos", app.cameraPosition());
-        shader.set("usePunctual", punctual ? 1 : 0);
-        shader.set("useIbl", ibl ? 1 : 0);
-        shader.set("multipleScattering", app.options().has("--single-scattering") ? 0 : 1);
-        shader.set("toneMapper", toneMapper);
-        shader.set("exposure", exposure);
-        selectView(shader, view, app.flagNumber("--gain"));
+        // what every program of the frame is given before its first primitive
+        auto setFrame = [&](Shader& shader) {
+            GltfRenderer::setLights(shader, shown);
+            shader.set("projection", app.projection());
+            shader.set("view", app.view());
+            shader.set("camPos", app.cameraPosition());
+            shader.set("usePunctual", punctual ? 1 : 0);
+            shader.set("useIbl", ibl ? 1 : 0);
+            shader.set("multipleScattering", app.options().has("--single-scattering") ? 0 : 1);
+            shader.set("toneMapper", toneMapper);
+            shader.set("exposure", exposure);
+            selectView(shader, view, app.flagNumber("--gain"));
+            if (ibl) maps->use(shader, GltfRenderer::kFirstIblUnit);
+        };
         if (ibl) {
-            maps->use(shader, GltfRenderer::kFirstIblUnit);
             // the sky first here: blended primitives must be drawn over it
             skybox.setToneMapping(toneMapper, exposure);
             if (view == View::Final)
                 skybox.draw(maps->environment.environmentMap(), app.view(), app.projection());
         }
-        renderer->draw(gpuModel, glm::mat4(1.0f), app.view());
+        renderer.draw(gpuModel, glm::mat4(1.0f), app.view(), setFrame);
         if (!app.flag("--model")) {
             for (const GltfViewerConfig::Label& label : config.defaultModelLabels) {
                 app.label(model.boundsMin + label.atBounds * (model.boundsMax - model.boundsMin),

@@ -720,7 +720,9 @@ TEST(Gl, GltfWhiteFurnaceWithAndWithoutMultipleScattering) {
     App app = makeApp(dir);
     const WhiteFurnace furnace;
     Shader& shader = app.shader("common/gltf.vert", "common/gltf.frag");
-    const GltfRenderer renderer(shader);  // texture units, no lights
+    const GltfRenderer renderer([&](const std::vector<std::string>&) -> Shader& { return shader; });
+    renderer.setUnits(shader, {});
+    GltfRenderer::setLights(shader, {});
     furnace.setUp(shader, GltfRenderer::kFirstIblUnit);
     const Texture2D white(Image{1, 1, 4, {255, 255, 255, 255}}, ColorSpace::Linear);
     for (int unit = 0; unit < 5; ++unit) white.bind(unit);
