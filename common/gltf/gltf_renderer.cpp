@@ -56,16 +56,14 @@ std::vector<std::string> materialLayers(const Material& m) {
     return layers;
 }
 
-GltfRenderer::GltfRenderer(ProgramFor programFor)
+GltfRenderer::GltfRenderer(ProgramFor programFor, bool extensions)
     : programFor_(std::move(programFor)),
+      extensions_(extensions),
       white_(Image{1, 1, 4, {255, 255, 255, 255}}, ColorSpace::Linear) {}
 
-GltfRenderer::GltfRenderer(ProgramFor programFor, const TextureCube* sheenMap,
-                           const Texture2D* sheenLut)
-    : GltfRenderer(std::move(programFor)) {
-    extensions_ = true;
-    sheenMap_ = sheenMap;
+void GltfRenderer::setSheenMaps(const Texture2D* sheenLut, const TextureCube* sheenMap) {
     sheenLut_ = sheenLut;
+    sheenMap_ = sheenMap;
 }
 
 void GltfRenderer::setUnits(Shader& program, const std::vector<std::string>& layers) const {
@@ -112,9 +110,12 @@ Shader& GltfRenderer::programFor(const Material& material, const SetFrame& setFr
         prepared_.push_back(&program);
     }
     if (has(layers, "SHEEN")) {
-        if (!sheenMap_ || !sheenLut_) throw Error("a sheen drawn without the sheen's maps");
+        if (!sheenLut_) throw Error("a sheen drawn without the sheen's LUT");
         sheenLut_->bind(layerUnit(layers, "sheenLUT"));
-        sheenMap_->bind(layerUnit(layers, "sheenMap"));
+        if (sheenMap_) {  // read only with image-based light
+            sheenMap_->bind(layerUnit(layers, "sheenMap"));
+            program.set("sheenMaxLod", float(sheenMap_->levels() - 1));
+        }
     }
     return program;
 }

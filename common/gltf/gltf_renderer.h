@@ -47,11 +47,12 @@ public:
     // lights, the IBL maps' units.
     using SetFrame = std::function<void(Shader&)>;
 
-    // Draws the core material (07, 08): every primitive with `programFor({})`.
-    explicit GltfRenderer(ProgramFor programFor);
-    // Draws the advanced material's layers too (sample 10), with the sheen's maps: its
-    // prefiltered environment (IblEnvironment::sheenMap) and the LUT whose A is its albedo.
-    GltfRenderer(ProgramFor programFor, const TextureCube* sheenMap, const Texture2D* sheenLut);
+    // Draws the core material alone (07, 08: every primitive with `programFor({})`), or with
+    // `extensions` the advanced material's layers too (sample 10).
+    explicit GltfRenderer(ProgramFor programFor, bool extensions = false);
+    // The sheen's maps (sample 10): the LUT whose A is its albedo, and its prefiltered
+    // environment (IblEnvironment::sheenMap; null without image-based light). Kept by pointer.
+    void setSheenMaps(const Texture2D* sheenLut, const TextureCube* sheenMap);
 
     // Sets a program's texture units for its layers (draw does, for each program it uses).
     void setUnits(Shader& program, const std::vector<std::string>& layers) const;

@@ -24,6 +24,10 @@ namespace {
 const std::vector<std::string> kDrawnExtensions = {"KHR_lights_punctual", "KHR_texture_transform",
                                                    "KHR_materials_unlit",
                                                    "KHR_materials_pbrSpecularGlossiness"};
+// and those the advanced material's layers add (sample 10)
+const std::vector<std::string> kLayerExtensions = {
+    "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_ior",
+    "KHR_materials_specular", "KHR_materials_emissive_strength"};
 
 std::string joined(const std::vector<std::string>& names) {
     std::string text;
@@ -33,16 +37,18 @@ std::string joined(const std::vector<std::string>& names) {
 
 // What a learner should hear about a file before its picture: what it asks for that is not
 // drawn, and what stands in for what it lacks.
-void describe(const Model& model, bool punctual) {
+void describe(const Model& model, bool punctual, bool extensions) {
     const std::string file = displayPath(model.file);
-    if (const auto required = extensionsNotDrawn(model, kDrawnExtensions, true);
+    std::vector<std::string> drawn = kDrawnExtensions;
+    if (extensions) drawn.insert(drawn.end(), kLayerExtensions.begin(), kLayerExtensions.end());
+    if (const auto required = extensionsNotDrawn(model, drawn, true);
         !required.empty()) {
         std::fprintf(stderr,
                      "warning: %s: requires %s, which this renderer does not draw; drawn "
                      "without %s\n",
                      file.c_str(), joined(required).c_str(), required.size() > 1 ? "them" : "it");
     }
-    if (auto used = extensionsNotDrawn(model, kDrawnExtensions, false); !used.empty()) {
+    if (auto used = extensionsNotDrawn(model, drawn, false); !used.empty()) {
         for (std::string& name : used) name = extensionAndItsMaterials(model, name);
         std::fprintf(stderr, "note: %s: uses %s (optional), not drawn\n", file.c_str(),
                      joined(used).c_str());
@@ -98,7 +104,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
              .orbitCamera = true});
     const Model model = loadModel(app.flag("--model").value_or(config.defaultModel.string()));
     const GpuModel gpuModel(model);  // every texture read: a broken one ends the run here
-    describe(model, !app.options().has("--no-punctual"));
+    describe(model, !app.options().has("--no-punctual"), config.extensions);
     app.useOrbitCamera(model.boundsMin, model.boundsMax,
                        app.flag("--model") ? std::nullopt : config.defaultModelCamera);
     const std::vector<PunctualLight> fallback = {defaultLight()};
@@ -119,7 +125,10 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         defines.insert(defines.end(), layers.begin(), layers.end());
         return app.shader("common/gltf.vert", "common/gltf.frag", defines);
     };
-    GltfRenderer renderer(programFor);
+    GltfRenderer renderer(programFor, config.extensions);
+    // the sheen's LUT (baked: A is its albedo) and prefiltered environment (with the IBL maps)
+    std::optional<Texture2D> sheenLut;
+    std::optional<TextureCube> sheenMap;
 
     glEnable(GL_DEPTH_TEST);
     int saidAlone = 0;  // the --light K past the file's lights last said so (once a value)
@@ -146,12 +155,19 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         saidAlone = alone > 0 && size_t(alone) > lights.size() ? alone : 0;
         // Made again after R: the cache's keys hold the shaders' code, so an edited IBL shader
         // is computed anew.
-        if (ibl && (!cache || app.shadersReloaded())) {
+        if (config.extensions && (!sheenLut || app.shadersReloaded())) {
+            if (!cache) cache.emplace(cacheDir(app.options()));
+            sheenLut = brdfLut(*cache, 256, 1024, BrdfLutChannels::ScaleBiasSheen);
+            app.bindRenderTarget();
+        }
+        if (ibl && (!maps || app.shadersReloaded())) {
             if (!cache) cache.emplace(cacheDir(app.options()));
             maps.emplace(*cache, environmentFile(app.options()));
+            if (config.extensions) sheenMap = maps->environment.sheenMap();
             app.addPrecomputeSeconds(cache->computeSeconds());
             app.bindRenderTarget();  // the frame's, after the precomputation's own
         }
+        renderer.setSheenMaps(sheenLut ? &*sheenLut : nullptr, sheenMap ? &*sheenMap : nullptr);
 
         // Without the environment, a dark grey background (linear; the target encodes it); a view
         // on its neutral grey, without the sky.

@@ -47,6 +47,7 @@ int main(int argc, char** argv) try {
     write(dir, environment.irradianceFile(32), environment.irradianceMap(32).toKtx());
     write(dir, environment.prefilteredFile(128, 5, pbr::kPrefilterSamples),
           environment.prefilteredMap(128, 5, pbr::kPrefilterSamples).toKtx());
+    write(dir, environment.sheenFile(), environment.sheenMap().toKtx());  // sample 10's
     return 0;
 } catch (...) {
     return pbr::reportFailure();

@@ -22,15 +22,72 @@ uniform float exposure;
 #include "brdf.glsl"
 #include "ibl_ambient.glsl"
 #include "punctual_lights.glsl"
+#ifdef GLTF_EXTENSIONS
+// sample 10's layers (pbr::materialLayers: this program has those of the material it draws)
+#include "gltf_extensions.glsl"
+#ifdef SHEEN
+uniform sampler2D sheenLUT;   // A: the sheen's albedo at (NdotV, sheen roughness)
+uniform samplerCube sheenMap;  // the environment prefiltered by the sheen's lobe
+uniform float sheenMaxLod;     // its last mip level: sheen roughness 1
+#endif
+#endif
 #include "gltf_material.glsl"
 #include "tonemap.glsl"
 #include "views.glsl"
 #include "gltf_views.glsl"
 
+#ifdef GLTF_EXTENSIONS
+// The advanced material's light (gltf_extensions.glsl): emission through the coat, each punctual
+// light through the layers, the image-based light through the layers' split sum (the coat's own
+// reads at its normal and roughness, the sheen's from its prefiltered map), times occlusion.
+vec3 layeredColor(SurfaceMaterial m)
+{
+    LayeredSurface s = readLayeredSurface(m);
+    vec3 V = normalize(camPos - WorldPos);
+    float sheenAtV = 0.0;
+#ifdef SHEEN
+    sheenAtV = texture(sheenLUT, vec2(clamp(dot(s.N, V), 0.0, 1.0), s.sheenRoughness)).a;
+#endif
+    float coatWeight = s.clearcoat * clearcoatFresnel(s.clearcoatF0, dot(s.clearcoatN, V));
+    vec3 color = emission(m.emissive, emissiveStrength, coatWeight);
+    if (usePunctual)
+    {
+        for (int i = 0; i < punctualLightCount; ++i)
+        {
+            vec3 L;
+            vec3 radiance = punctualRadiance(i, WorldPos, L);
+            float sheenAtL = 0.0;
+#ifdef SHEEN
+            sheenAtL = texture(sheenLUT, vec2(clamp(dot(s.N, L), 0.0, 1.0), s.sheenRoughness)).a;
+#endif
+            color += layeredDirectLight(s, V, L, radiance, sheenAtV, sheenAtL);
+        }
+    }
+    if (useIbl)
+    {
+        SplitSumReads base = readSplitSum(s.N, V, s.roughness);
+        SplitSumReads coat = base;
+#ifdef CLEARCOAT
+        coat = readSplitSum(s.clearcoatN, V, s.clearcoatRoughness);
+#endif
+        vec3 sheenRadiance = vec3(0.0);
+#ifdef SHEEN
+        sheenRadiance = textureLod(sheenMap, reflect(-V, s.N), s.sheenRoughness * sheenMaxLod).rgb;
+#endif
+        color += layeredAmbientLight(s, base, coat, sheenRadiance, sheenAtV) * m.occlusion;
+    }
+    return color;
+}
+#endif
+
 void main()
 {
     SurfaceMaterial m = readGltfMaterial();
     vec3 color = m.baseColor;
+#ifdef GLTF_EXTENSIONS
+    if (!unlit)
+        color = layeredColor(m);
+#else
     if (!unlit)
     {
         vec3 V = normalize(camPos - WorldPos);
@@ -49,6 +106,7 @@ void main()
             color += ambientLightGltf(m.N, V, m.diffuseColor, m.F0, m.baseColor, m.metallic,
                                       m.roughness) * m.occlusion;
     }
+#endif
     FragColor = vec4(toneMap(color, toneMapper, exposure), m.alpha);
 #ifdef TERM_VIEWS  // --view: one input or term of the equation instead (gltf_views.glsl)
     FragColor.rgb = gltfView(termView, m, normalize(camPos - WorldPos));

@@ -54,6 +54,49 @@ uniform int alphaMode;
 uniform float alphaCutoff;
 uniform bool unlit;  // KHR_materials_unlit: the base colour is the result
 
+#ifdef GLTF_EXTENSIONS
+// The advanced material (sample 10, gltf_extensions.glsl): KHR_materials_ior, _specular and
+// _emissive_strength always; each other layer only in the programs of the materials that use it
+// (pbr::materialLayers), its textures on the units after the IBL maps'.
+uniform float ior;
+uniform float khrSpecularFactor;
+uniform vec3 khrSpecularColorFactor;
+uniform float emissiveStrength;
+#ifdef SPECULAR
+uniform sampler2D khrSpecularTexture;  // A
+uniform int khrSpecularUvSet;
+uniform mat3 khrSpecularUvTransform;
+uniform sampler2D khrSpecularColorTexture;  // RGB, sRGB
+uniform int khrSpecularColorUvSet;
+uniform mat3 khrSpecularColorUvTransform;
+#endif
+#ifdef CLEARCOAT
+uniform float clearcoatFactor;
+uniform sampler2D clearcoatTexture;  // R
+uniform int clearcoatUvSet;
+uniform mat3 clearcoatUvTransform;
+uniform float clearcoatRoughnessFactor;
+uniform sampler2D clearcoatRoughnessTexture;  // G
+uniform int clearcoatRoughnessUvSet;
+uniform mat3 clearcoatRoughnessUvTransform;
+uniform bool hasClearcoatNormalTexture;
+uniform float clearcoatNormalScale;
+uniform sampler2D clearcoatNormalTexture;
+uniform int clearcoatNormalUvSet;
+uniform mat3 clearcoatNormalUvTransform;
+#endif
+#ifdef SHEEN
+uniform vec3 sheenColorFactor;
+uniform sampler2D sheenColorTexture;  // RGB, sRGB
+uniform int sheenColorUvSet;
+uniform mat3 sheenColorUvTransform;
+uniform float sheenRoughnessFactor;
+uniform sampler2D sheenRoughnessTexture;  // A
+uniform int sheenRoughnessUvSet;
+uniform mat3 sheenRoughnessUvTransform;
+#endif
+#endif
+
 struct SurfaceMaterial
 {
     vec3 baseColor;     // linear: what an unlit material shows
@@ -85,6 +128,22 @@ vec3 gltfShadingNormal()
     tangentNormal.xy *= normalScale;
     return normalFromMapWithTangent(normalize(tangentNormal), normal, tangent);
 }
+
+#ifdef CLEARCOAT
+// The clear coat's own normal: the geometric one, perturbed by its normal texture when it has one
+// (not by the base's: the coat lies smooth over a bumpy base).
+vec3 clearcoatShadingNormal()
+{
+    vec3 normal = gl_FrontFacing ? Normal : -Normal;
+    vec4 tangent = gl_FrontFacing ? Tangent : -Tangent;
+    if (!hasClearcoatNormalTexture)
+        return normalize(normal);
+    vec3 tangentNormal = texture(clearcoatNormalTexture,
+                                 textureUv(clearcoatNormalUvSet, clearcoatNormalUvTransform)).xyz * 2.0 - 1.0;
+    tangentNormal.xy *= clearcoatNormalScale;
+    return normalFromMapWithTangent(normalize(tangentNormal), normal, tangent);
+}
+#endif
 
 // The material at this fragment, in either workflow. MASK discards what lies below the cutoff.
 SurfaceMaterial readGltfMaterial()
@@ -129,3 +188,51 @@ SurfaceMaterial readGltfMaterial()
     m.N = gltfShadingNormal();
     return m;
 }
+
+#ifdef GLTF_EXTENSIONS
+// The layers over the material read above (gltf_extensions.glsl's LayeredSurface): the
+// dielectric's F0 and F90 from ior and KHR_materials_specular (its factor times its texture's A,
+// its colour times its texture's RGB), the sheen's colour and roughness (texture RGB and A), the
+// clear coat's strength, roughness (texture R and G) and normal; a layer the program lacks is off.
+LayeredSurface readLayeredSurface(SurfaceMaterial m)
+{
+    LayeredSurface s;
+    float specular = khrSpecularFactor;
+    vec3 specularColor = khrSpecularColorFactor;
+#ifdef SPECULAR
+    specular *= texture(khrSpecularTexture, textureUv(khrSpecularUvSet, khrSpecularUvTransform)).a;
+    specularColor *= texture(khrSpecularColorTexture,
+                             textureUv(khrSpecularColorUvSet, khrSpecularColorUvTransform)).rgb;
+#endif
+    DielectricFresnel fresnel = dielectricFresnel(ior, specularColor, specular);
+    s.N = m.N;
+    s.diffuseColor = m.diffuseColor;
+    s.F0 = specularGlossiness ? m.F0 : fresnel.F0;  // the workflow's own (the layers exclude it)
+    s.F90 = specularGlossiness ? 1.0 : fresnel.F90;
+    s.metalColor = m.baseColor;
+    s.metallic = m.metallic;
+    s.roughness = m.roughness;
+    s.sheenColor = vec3(0.0);
+    s.sheenRoughness = 0.0;
+#ifdef SHEEN
+    s.sheenColor = sheenColorFactor *
+                   texture(sheenColorTexture, textureUv(sheenColorUvSet, sheenColorUvTransform)).rgb;
+    s.sheenRoughness = sheenRoughnessFactor *
+                       texture(sheenRoughnessTexture, textureUv(sheenRoughnessUvSet, sheenRoughnessUvTransform)).a;
+#endif
+    s.clearcoat = 0.0;
+    s.clearcoatRoughness = 0.0;
+    s.clearcoatN = m.N;
+    s.clearcoatF0 = iorToF0(ior);
+#ifdef CLEARCOAT
+    s.clearcoat = clearcoatFactor *
+                  texture(clearcoatTexture, textureUv(clearcoatUvSet, clearcoatUvTransform)).r;
+    s.clearcoatRoughness = clamp(clearcoatRoughnessFactor *
+                                     texture(clearcoatRoughnessTexture,
+                                             textureUv(clearcoatRoughnessUvSet, clearcoatRoughnessUvTransform)).g,
+                                 0.0, 1.0);
+    s.clearcoatN = clearcoatShadingNormal();
+#endif
+    return s;
+}
+#endif

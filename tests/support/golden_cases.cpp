@@ -58,6 +58,8 @@ std::vector<GoldenCase> goldenCases() {
          0.1,
          {},
          true},
+        // 10: the advanced material's layers, a row each, on the project's showcase
+        {"10_gltf_advanced_materials", "10_gltf_advanced_materials", {}, 0.2},
     };
     // The live panel drawn into the picture (--panel), over 01's grid: the controls made from
     // 01's flag declarations, the command line of the view.
@@ -166,6 +168,7 @@ std::vector<GoldenCase> webGoldenCases() {
         {"03_gltf_unlit", "03_gltf_unlit", {}, 0.05},
         {"07_gltf_metallic_roughness", "07_gltf_metallic_roughness"},
         {"08_gltf_specular_glossiness", "08_gltf_specular_glossiness"},
+        {"10_gltf_advanced_materials", "10_gltf_advanced_materials", {}, 0.2},
     };
 }
 

@@ -101,8 +101,10 @@ TEST_P(WebGolden, MatchesGolden) {
     PBR_NEED_WEB(golden.sample);
     const fs::path dir = testOutputDir("web_golden_" + golden.golden);
     const WebRender render = renderPage(golden.sample, golden.args, dir, true);
-    // the header says how this sample's picture takes the mouse (07 and 08 orbit, 06 is still)
-    const bool orbits = golden.sample.starts_with("07_") || golden.sample.starts_with("08_");
+    // the header says how this sample's picture takes the mouse (07, 08 and 10 orbit, 06 is
+    // still)
+    const bool orbits = golden.sample.starts_with("07_") || golden.sample.starts_with("08_") ||
+                        golden.sample.starts_with("10_");
     const std::string moves = orbits                             ? "drag the picture to orbit"
                               : golden.sample.starts_with("06_") ? "Esc ends the run"
                                                                  : "WASD moves";
