@@ -1,5 +1,5 @@
 // The Khronos glTF Sample Viewer (npm @khronosgroup/gltf-viewer 1.1.0, WebGL 2 in headless
-// Chromium on SwiftShader) as a reference for samples 07 and 08: the same glTF file, camera, lights
+// Chromium on SwiftShader) as a reference for samples 07, 08 and 10: the same glTF file, camera, lights
 // and output size drawn by both, compared pixel by pixel (see ../../shared/DESIGN.md, "The Khronos
 // glTF Sample Viewer as a reference", and tests/khronos/render_viewer.js).
 //
@@ -647,6 +647,79 @@ TEST(Khronos, SpecularGlossinessMatchesTheSampleViewer) {
     cases.push_back(assetCase("pbr_workflows", k08, modelDir() / "pbr_workflows.gltf",
                               {0.0f, 0.0f, 9.0f}, 320, 180, 33, 1000));
     runCases("specgloss", cases);
+}
+
+// Sample 10's layers, one extension a file, each on a square under 07's feature lights (a point
+// light in front, a directional one), IBL off as everywhere here. Gated as the feature files
+// (measured 2026-12-06: 56.8 to 60.9 dB, worst 1, but for the sheen's named difference below).
+// Planted, a coat added instead of mixed, F0 ignoring ior and emissive strength applied twice
+// each fail their case; a dropped albedo scaling cannot fail here (the viewer has none), the
+// white furnaces and the GLSL-against-mirror test catch it.
+TEST(Khronos, AdvancedMaterialsMatchTheSampleViewer) {
+    PBR_NEED_VIEWER();
+    const fs::path dir = testOutputDir("khronos_layer_files");
+    const char* k10 = "10_gltf_advanced_materials";
+    auto material = [](const std::string& base, const std::string& extension,
+                       const std::string& members, const std::string& core = "") {
+        return R"({"pbrMetallicRoughness":{"baseColorFactor":)" + base +
+               R"(,"metallicFactor":0,"roughnessFactor":0.6})" + core + R"(,"extensions":{")" +
+               extension + R"(":{)" + members + "}}}";
+    };
+    struct Layer {
+        std::string name, extension, material;
+        glm::vec3 eye{0.0f, 0.0f, 3.2f};
+        double minPsnr = kFeaturePsnr;
+        int maxWorst = kFeatureWorst;
+        std::string secondExtension = "";
+    };
+    const std::string red = "[0.7,0.06,0.05,1]", dark = "[0.05,0.05,0.06,1]";
+    const std::vector<Layer> layers = {
+        {"clearcoat", "KHR_materials_clearcoat",
+         material(red, "KHR_materials_clearcoat",
+                  R"("clearcoatFactor":1,"clearcoatRoughnessFactor":0.3)")},
+        {"clearcoat_half_smooth", "KHR_materials_clearcoat",
+         material(red, "KHR_materials_clearcoat",
+                  R"("clearcoatFactor":0.5,"clearcoatRoughnessFactor":0.05)")},
+        // Seen at a grazing angle, where a sheen shows. The viewer 1.1.0 never scales the base
+        // under a sheen (its package lacks the albedo table it asks for): with our scaling left
+        // out the two agree at 61.2 dB, worst 1 (measured); with it the base's grazing
+        // reflection here is ours dimmed by 1 - max(sheenColor) E, measured 38.0 dB, worst 12:
+        // gated there, the named difference. The sheen's lobe itself is the next case's.
+        {"sheen", "KHR_materials_sheen",
+         material(dark, "KHR_materials_sheen",
+                  R"("sheenColorFactor":[1,0.5,0.8],"sheenRoughnessFactor":0.5)"),
+         {0.0f, -2.9f, 1.1f}, 35.0, 16},
+        // the sheen alone over a base that reflects nothing (black, KHR_materials_specular 0):
+        // nothing for the albedo scaling to dim
+        {"sheen_lobe", "KHR_materials_sheen",
+         R"({"pbrMetallicRoughness":{"baseColorFactor":[0,0,0,1],"metallicFactor":0,)"
+         R"("roughnessFactor":0.6},"extensions":{"KHR_materials_sheen":{"sheenColorFactor":)"
+         R"([1,0.5,0.8],"sheenRoughnessFactor":0.5},"KHR_materials_specular":)"
+         R"({"specularFactor":0}}})",
+         {0.0f, -2.9f, 1.1f}, kFeaturePsnr, kFeatureWorst, "KHR_materials_specular"},
+        {"specular", "KHR_materials_specular",
+         material("[0.3,0.3,0.3,1]", "KHR_materials_specular",
+                  R"("specularFactor":0.5,"specularColorFactor":[1,0.5,0.2])")},
+        {"ior", "KHR_materials_ior", material(dark, "KHR_materials_ior", R"("ior":2.2)")},
+        {"emissive_strength", "KHR_materials_emissive_strength",
+         material(dark, "KHR_materials_emissive_strength", R"("emissiveStrength":4)",
+                  R"(,"emissiveFactor":[0.2,0.1,0.05])")},
+    };
+    std::vector<Case> cases;
+    for (const Layer& layer : layers) {
+        SceneFile s;
+        const std::string attributes = squareAttributes(s.buffer, 1.0f, 0.0f);
+        const int indices = s.buffer.indices({0, 1, 2, 0, 2, 3});
+        s.primitives.push_back(primitive(attributes, indices, 0));
+        s.materials.push_back(layer.material);
+        s.lights.push_back(point({0.4f, 0.5f, 1.2f}, 3.0f));
+        s.lights.push_back(directional({-0.3f, -0.4f, -1.0f}, 1.0f));
+        s.extensions.push_back(layer.extension);
+        if (!layer.secondExtension.empty()) s.extensions.push_back(layer.secondExtension);
+        cases.push_back({layer.name, k10, s.write(dir, layer.name), layer.eye, 192, 144,
+                         layer.minPsnr, layer.maxWorst});
+    }
+    runCases("layers", cases);
 }
 
 }  // namespace
