@@ -1049,6 +1049,15 @@ void main() { FragColor = vec4(shadeLights(vec3(0.0), vec3(0, 1, 0), vec3(0, 0, 
     EXPECT_THROW(buffer.upload(tooMany), Error);
 }
 
+// A float texture holding a shader test's inputs, one RGB value a texel, row by row.
+Texture2D inputsTexture(int width, int height, const std::vector<glm::vec3>& values) {
+    Texture2D texture(width, height, GL_RGB32F);
+    glBindTexture(GL_TEXTURE_2D, texture.id());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGB, GL_FLOAT, values.data());
+    return texture;
+}
+
 TEST(Gl, ToneMappersMatchTheCpu) {
     const fs::path dir = test::testOutputDir("gl_tonemap");
     App app = makeApp(dir);
@@ -1064,10 +1073,7 @@ TEST(Gl, ToneMappersMatchTheCpu) {
     constexpr int kUnknownMapper = 7;
     const std::array<int, 5> mappers = {0, 1, 2, 3, kUnknownMapper};
 
-    Texture2D inputTexture(count, 1, GL_RGB32F);
-    glBindTexture(GL_TEXTURE_2D, inputTexture.id());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, count, 1, GL_RGB, GL_FLOAT, inputs.data());
+    const Texture2D inputTexture = inputsTexture(count, 1, inputs);
     const fs::path fragment = dir / "tonemap.frag";
     writeFileAtomically(fragment, R"(#version 330 core
 #include "tonemap.glsl"
@@ -1138,10 +1144,7 @@ TEST(Gl, GltfExtensionLayersMatchTheCpu) {
         const float NdotL = 0.05f + 0.95f * float(i / 8) / 7.0f, sinL = std::sqrt(1.0f - NdotL * NdotL);
         directions.push_back({-sinL * std::cos(0.7f), sinL * std::sin(0.7f), NdotL});
     }
-    Texture2D inputTexture(kCount, 2, GL_RGB32F);
-    glBindTexture(GL_TEXTURE_2D, inputTexture.id());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kCount, 2, GL_RGB, GL_FLOAT, directions.data());
+    const Texture2D inputTexture = inputsTexture(kCount, 2, directions);
     const fs::path fragment = dir / "layers.frag";
     writeFileAtomically(fragment, R"(#version 330 core
 #include "brdf.glsl"
