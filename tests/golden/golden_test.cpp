@@ -176,9 +176,10 @@ TEST(Golden, TangentFramesAgree) {
     EXPECT_GT(diff.psnr, 50.0);
 }
 
+// (at 320x180: what makes two runs differ is not the picture's size)
 TEST(Golden, HeadlessOutputIsBitIdentical) {
     const fs::path dir = testOutputDir("golden_determinism");
-    const std::vector<std::string> args = {"--size", "640x360"};
+    const std::vector<std::string> args = {"--size", "320x180"};
     for (const std::string sample : {"01_lighting", "02_lighting_textured", "03_gltf_unlit",
                                      "04_ibl_irradiance", "05_ibl_specular", "06_brdf_lut",
                                      "07_gltf_metallic_roughness"}) {
