@@ -24,6 +24,7 @@
 //   - IBL energy compensation: IBL is off everywhere, so nothing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -37,6 +38,8 @@
 
 #include "base/paths.h"
 #include "files/image.h"
+#include "files/ktx.h"
+#include "ibl/ibl_cache.h"
 #include "gltf/gltf_renderer.h"
 #include "gltf/model.h"
 #include "math/camera.h"
@@ -368,12 +371,17 @@ std::string vec(glm::vec3 v) {
 
 // Draws every case with its sample and, in one browser session, with the viewer; compares them,
 // prints one line a case and checks each against its gate.
-void runCases(const std::string& suite, const std::vector<Case>& cases) {
+// `sheenTable`: a lut_sheen_E.png for the viewer to apply its sheen albedo scaling with (see
+// render_viewer.js); empty: none (the viewer then never scales).
+void runCases(const std::string& suite, const std::vector<Case>& cases,
+              const fs::path& sheenTable = {}) {
     const fs::path dir = testOutputDir("khronos_" + suite);
     HdrImage environment{32, 16, std::vector<float>(32 * 16 * 3, 0.5f)};  // never lights anything
     writeHdr(dir / "environment.hdr", environment);
 
-    std::string job = "{\"environment\":\"" + (dir / "environment.hdr").string() + "\",\"cases\":[";
+    std::string job = "{\"environment\":\"" + (dir / "environment.hdr").string() + "\",";
+    if (!sheenTable.empty()) job += "\"sheenTable\":\"" + fs::absolute(sheenTable).string() + "\",";
+    job += "\"cases\":[";
     for (size_t i = 0; i < cases.size(); ++i) {
         const Case& c = cases[i];
         const Model model = loadModel(c.gltf);
@@ -651,10 +659,10 @@ TEST(Khronos, SpecularGlossinessMatchesTheSampleViewer) {
 
 // Sample 10's layers, one extension a file, each on a square under 07's feature lights (a point
 // light in front, a directional one), IBL off as everywhere here. Gated as the feature files
-// (measured 2026-12-06: 56.8 to 60.9 dB, worst 1, but for the sheen's named difference below).
-// Planted, a coat added instead of mixed, F0 ignoring ior and emissive strength applied twice
-// each fail their case; a dropped albedo scaling cannot fail here (the viewer has none), the
-// white furnaces and the GLSL-against-mirror test catch it.
+// (measured 2026-12-06: 56.8 to 61.0 dB, worst 1). The viewer scales the base under a sheen with
+// the table it asks for served (render_viewer.js: our LUT's A, its layout, and one line of its
+// bundle changed). Planted, a coat added instead of mixed, F0 ignoring ior, emissive strength
+// applied twice and the sheen's albedo scaling dropped each fail their case.
 TEST(Khronos, AdvancedMaterialsMatchTheSampleViewer) {
     PBR_NEED_VIEWER();
     const fs::path dir = testOutputDir("khronos_layer_files");
@@ -680,15 +688,13 @@ TEST(Khronos, AdvancedMaterialsMatchTheSampleViewer) {
         {"clearcoat_half_smooth", "KHR_materials_clearcoat",
          material(red, "KHR_materials_clearcoat",
                   R"("clearcoatFactor":0.5,"clearcoatRoughnessFactor":0.05)")},
-        // Seen at a grazing angle, where a sheen shows. The viewer 1.1.0 never scales the base
-        // under a sheen (its package lacks the albedo table it asks for): with our scaling left
-        // out the two agree at 61.2 dB, worst 1 (measured); with it the base's grazing
-        // reflection here is ours dimmed by 1 - max(sheenColor) E, measured 38.0 dB, worst 12:
-        // gated there, the named difference. The sheen's lobe itself is the next case's.
+        // Seen at a grazing angle, where a sheen shows, the base's reflection scaled under it:
+        // the viewer with its albedo table served (below; without it, 38.0 dB, worst 12: its
+        // base left bright)
         {"sheen", "KHR_materials_sheen",
          material(dark, "KHR_materials_sheen",
                   R"("sheenColorFactor":[1,0.5,0.8],"sheenRoughnessFactor":0.5)"),
-         {0.0f, -2.9f, 1.1f}, 35.0, 16},
+         {0.0f, -2.9f, 1.1f}},
         // the sheen alone over a base that reflects nothing (black, KHR_materials_specular 0):
         // nothing for the albedo scaling to dim
         {"sheen_lobe", "KHR_materials_sheen",
@@ -719,7 +725,22 @@ TEST(Khronos, AdvancedMaterialsMatchTheSampleViewer) {
         cases.push_back({layer.name, k10, s.write(dir, layer.name), layer.eye, 192, 144,
                          layer.minPsnr, layer.maxWorst});
     }
-    runCases("layers", cases);
+    // The viewer's sheen table from ours: the A channel of the baked sheen LUT (E with Charlie's
+    // visibility, the viewer's own D_Charlie and V_Sheen), in the viewer's layout (R, x = NdotV,
+    // y = sheen roughness, row 0 at y = 0), 8 bits.
+    const KtxImage lut = readKtx(iblDir() / "brdf_lut_sheen_256.ktx");
+    Image table{lut.width, lut.height, 3, {}};
+    for (int y = 0; y < lut.height; ++y) {
+        for (int x = 0; x < lut.width; ++x) {
+            const float E = lutTexel(lut, (x + 0.5f) / float(lut.width),
+                                     (y + 0.5f) / float(lut.height))
+                                .sheenAlbedo;
+            const auto byte = std::uint8_t(std::lround(std::clamp(E, 0.0f, 1.0f) * 255.0f));
+            table.pixels.insert(table.pixels.end(), {byte, byte, byte});
+        }
+    }
+    writePng(dir / "lut_sheen_E.png", table);
+    runCases("layers", cases, dir / "lut_sheen_E.png");
 }
 
 }  // namespace

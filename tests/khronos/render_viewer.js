@@ -1,5 +1,5 @@
 // Renders glTF files with the Khronos glTF Sample Viewer (npm @khronosgroup/gltf-viewer 1.1.0,
-// WebGL 2) in ONE headless Chromium session, as a reference for samples 07 and 08
+// WebGL 2) in ONE headless Chromium session, as a reference for samples 07, 08 and 10
 // (tests/khronos/khronos_test.cpp). A tiny HTTP server on 127.0.0.1 (node's http module) serves
 // the page, the viewer's bundle and its libraries, and the cases' files; the browser is driven
 // over the DevTools protocol on a pipe (tests/support/chromium_pipe.js).
@@ -14,7 +14,14 @@
 //                    "width": w, "height": h, "output": "/abs/out.png",
 //                    "clear": linear grey of the background,
 //                    "defaultLight": { "direction": [x,y,z], "intensity": lux }  (optional: the
-//                        light a renderer adds to a file without KHR_lights_punctual) } ] }
+//                        light a renderer adds to a file without KHR_lights_punctual) } ],
+//       "sheenTable": "/abs/lut_sheen_E.png"  (optional, below) }
+//
+// The viewer 1.1.0 never applies its sheen albedo scaling: its package lacks the table it asks
+// for (lut_sheen_E.png), and it marks that texture initialized before any upload, so even a
+// served file would never reach the GL. With "sheenTable" the job serves that table (E of its
+// Charlie sheen at x = NdotV, y = sheen roughness, in R) and the bundle is served with that one
+// line changed (sheenELut.initialized = false), so that the viewer scales as it means to.
 //
 // Every case: IBL off (the viewer still needs an environment: the job's tiny .hdr, filtered
 // once), the file's own KHR_lights_punctual lights (no viewer default lights unless the case
@@ -198,12 +205,29 @@ const server = http.createServer((request, response) => {
     response.end(page);
     return;
   }
-  if (url === "/lut_sheen_E.png") {  // the sheen LUT the viewer fetches; nothing here uses sheen
+  if (url === "/lut_sheen_E.png" && !job.sheenTable) {  // fetched; the job draws no sheen
     response.writeHead(200, { "Content-Type": "image/png" });
     response.end(encodePng(1, 1, Buffer.from([255, 255, 255])));
     return;
   }
-  if (url.startsWith("/viewer/")) {
+  if (url === "/lut_sheen_E.png") {
+    file = path.resolve(job.sheenTable);
+  }
+  const bundle = "/viewer/dist/gltf-viewer.module.js";
+  if (url === bundle && job.sheenTable) {  // the one line that keeps the table from the GL
+    const text = fs.readFileSync(path.join(viewerDir, "dist", "gltf-viewer.module.js"), "utf8");
+    const line = "sheenELut.initialized = true;";
+    if (!text.includes(line)) {
+      finish(1, `the viewer's bundle has no '${line}' to clear: another version?`);
+      return;
+    }
+    response.writeHead(200, { "Content-Type": "text/javascript" });
+    response.end(text.replace(line, "sheenELut.initialized = false;"));
+    return;
+  }
+  if (file) {
+    // the table above
+  } else if (url.startsWith("/viewer/")) {
     file = path.join(viewerDir, path.normalize(url.slice("/viewer/".length)));
     if (!file.startsWith(path.resolve(viewerDir) + path.sep)) file = undefined;
   } else if (url.startsWith("/fs/")) {

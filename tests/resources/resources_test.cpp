@@ -202,5 +202,15 @@ TEST(Resources, PbrWorkflowsGltfPassesKhronosValidatorWithoutWarnings) {
     }
 }
 
+// Sample 10's asset, every layer's extension in it: no errors, no warnings.
+TEST(Resources, AdvancedMaterialsGltfPassesKhronosValidatorWithoutWarnings) {
+    const ValidatorRun v = validateGltf(modelDir() / "advanced_materials.gltf", {"--strict"});
+    if (!v.skipped.empty()) GTEST_SKIP() << v.skipped;
+    EXPECT_EQ(v.run.exitCode, 0) << v.run.out << v.run.err;
+    EXPECT_NE(v.run.out.find("errors 0 "), std::string::npos) << v.run.out;
+    EXPECT_NE(v.run.out.find("unexpected warnings 0\n"), std::string::npos) << v.run.out;
+    std::printf("gltf-validator advanced_materials.gltf: %s", v.run.out.c_str());
+}
+
 }  // namespace
 }  // namespace pbr::test
