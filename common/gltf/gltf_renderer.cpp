@@ -56,6 +56,21 @@ std::vector<std::string> materialLayers(const Material& m) {
     return layers;
 }
 
+int textureUnitsNeeded(const std::vector<std::string>& layers) {
+    int units = GltfRenderer::kFirstLayerUnit;
+    for (const LayerSampler& entry : kLayerSamplers) units += has(layers, entry.layer) ? 1 : 0;
+    return units;
+}
+
+void requireTextureUnits(const std::vector<std::string>& layers, int available,
+                         const std::string& material) {
+    const int needed = textureUnitsNeeded(layers);
+    if (needed > available) {
+        throw Error("material '" + material + "': its layers need " + std::to_string(needed) +
+                    " texture units, where this GL has " + std::to_string(available));
+    }
+}
+
 GltfRenderer::GltfRenderer(ProgramFor programFor, bool extensions)
     : programFor_(std::move(programFor)),
       extensions_(extensions),
@@ -105,6 +120,9 @@ Shader& GltfRenderer::programFor(const Material& material, const SetFrame& setFr
     Shader& program = programFor_(layers);
     program.use();
     if (std::find(prepared_.begin(), prepared_.end(), &program) == prepared_.end()) {
+        GLint available = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &available);
+        requireTextureUnits(layers, int(available), material.name);
         setUnits(program, layers);
         setFrame(program);
         prepared_.push_back(&program);

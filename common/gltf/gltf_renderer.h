@@ -32,6 +32,12 @@ namespace pbr {
 // CLEARCOAT (a clear coat of factor above 0), SHEEN (a sheen colour other than black), SPECULAR
 // (KHR_materials_specular's textures).
 std::vector<std::string> materialLayers(const Material& material);
+// The texture units a program of `layers` needs (the core material's, the IBL maps', each
+// layer's); throws Error("material 'NAME': its layers need N texture units, where this GL has
+// M") past `available` (GL_MAX_TEXTURE_IMAGE_UNITS: 16 in WebGL 2, often 32 natively).
+int textureUnitsNeeded(const std::vector<std::string>& layers);
+void requireTextureUnits(const std::vector<std::string>& layers, int available,
+                         const std::string& material);
 
 class GltfRenderer {
 public:

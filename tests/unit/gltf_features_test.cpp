@@ -20,6 +20,7 @@
 #include "base/paths.h"
 #include "files/gltf_file.h"
 #include "files/image.h"
+#include "gltf/gltf_renderer.h"
 #include "gltf/model.h"
 
 namespace pbr::test {
@@ -500,6 +501,26 @@ TEST(GltfFeatures, ExtensionListsNameWhatIsNotDrawn) {
     EXPECT_TRUE(extensionsNotDrawn(model, drawn, false).empty());  // said with the required
     EXPECT_EQ(extensionsNotDrawn(model, {"KHR_lights_punctual"}, false),
               std::vector<std::string>{"KHR_texture_transform"});
+}
+
+// The texture units a program of the advanced material needs: the core material's five and the
+// IBL maps' four, then each layer's own (the clear coat's three textures; the sheen's two and its
+// LUT and map; the specular layer's two): every layer on, 18, past WebGL 2's 16, is one line
+// naming the material.
+TEST(GltfFeatures, AMaterialsLayersNeedTheirTextureUnits) {
+    EXPECT_EQ(textureUnitsNeeded({}), 9);
+    EXPECT_EQ(textureUnitsNeeded({"GLTF_EXTENSIONS", "CLEARCOAT"}), 12);
+    EXPECT_EQ(textureUnitsNeeded({"GLTF_EXTENSIONS", "SHEEN"}), 13);
+    const std::vector<std::string> all = {"GLTF_EXTENSIONS", "CLEARCOAT", "SHEEN", "SPECULAR"};
+    EXPECT_EQ(textureUnitsNeeded(all), 18);
+    EXPECT_NO_THROW(requireTextureUnits(all, 32, "Fabric"));
+    try {
+        requireTextureUnits(all, 16, "Fabric");
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_STREQ(e.what(), "material 'Fabric': its layers need 18 texture units, where this "
+                               "GL has 16");
+    }
 }
 
 }  // namespace
