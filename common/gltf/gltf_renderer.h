@@ -56,6 +56,9 @@ public:
     // Draws the core material alone (07, 08: every primitive with `programFor({})`), or with
     // `extensions` the advanced material's layers too (sample 10).
     explicit GltfRenderer(ProgramFor programFor, bool extensions = false);
+    // Whether the layers are drawn from the next draw on (the term views show the core
+    // material's terms, without them).
+    void setExtensions(bool extensions) { extensions_ = extensions; }
     // The sheen's maps (sample 10): the LUT whose A is its albedo, and its prefiltered
     // environment (IblEnvironment::sheenMap; null without image-based light). Kept by pointer.
     void setSheenMaps(const Texture2D* sheenLut, const TextureCube* sheenMap);

@@ -139,6 +139,8 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         const float exposure = app.flagNumber("--exposure");
         const View view = viewNamed(app.flagChoice("--view"));
         viewDefinitions = viewDefines(view);
+        // a term view shows the core material's terms: its program, without the layers
+        renderer.setExtensions(config.extensions && view == View::Final);
         // --light K: that light alone (none where the file has fewer)
         const int alone = app.flagInt("--light");
         std::span<const PunctualLight> shown = punctual ? lights : std::span<const PunctualLight>();

@@ -470,9 +470,12 @@ const std::vector<LiveCase>& liveCases() {
           {"--attenuation", "1,0.09,0.032", "1,0.7,1.8"}}},
         {"view09", "09_light_types", {}, {view, gain}},
     };
-    static const bool viewers = [&] {  // 07 and 08: the same viewer, the same flags
+    // 07, 08 and 10: the same viewer, the same flags (10's with a program a material's layers:
+    // each live change must reach every one of them)
+    static const bool viewers = [&] {
         for (const auto& [number, sample] : {std::pair{"07", "07_gltf_metallic_roughness"},
-                                             {"08", "08_gltf_specular_glossiness"}}) {
+                                             {"08", "08_gltf_specular_glossiness"},
+                                             {"10", "10_gltf_advanced_materials"}}) {
             cases.push_back({std::string("light") + number,
                              sample,
                              {},
