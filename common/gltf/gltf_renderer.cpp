@@ -74,7 +74,9 @@ void requireTextureUnits(const std::vector<std::string>& layers, int available,
 GltfRenderer::GltfRenderer(ProgramFor programFor, bool extensions)
     : programFor_(std::move(programFor)),
       extensions_(extensions),
-      white_(Image{1, 1, 4, {255, 255, 255, 255}}, ColorSpace::Linear) {}
+      white_(Image{1, 1, 4, {255, 255, 255, 255}}, ColorSpace::Linear) {
+    glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &maxTextureUnits_);
+}
 
 void GltfRenderer::setSheenMaps(const Texture2D* sheenLut, const TextureCube* sheenMap) {
     sheenLut_ = sheenLut;
@@ -114,15 +116,12 @@ int GltfRenderer::setLights(Shader& program, std::span<const PunctualLight> ligh
     return int(lights.size()) - count;
 }
 
-Shader& GltfRenderer::programFor(const Material& material, const SetFrame& setFrame) {
-    const std::vector<std::string> layers =
-        extensions_ ? materialLayers(material) : std::vector<std::string>();
+Shader& GltfRenderer::programFor(const Material& material, const std::vector<std::string>& layers,
+                                 const SetFrame& setFrame) {
     Shader& program = programFor_(layers);
     program.use();
     if (std::find(prepared_.begin(), prepared_.end(), &program) == prepared_.end()) {
-        GLint available = 0;
-        glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &available);
-        requireTextureUnits(layers, int(available), material.name);
+        requireTextureUnits(layers, maxTextureUnits_, material.name);
         setUnits(program, layers);
         setFrame(program);
         prepared_.push_back(&program);
@@ -138,9 +137,8 @@ Shader& GltfRenderer::programFor(const Material& material, const SetFrame& setFr
     return program;
 }
 
-void GltfRenderer::setMaterial(Shader& program, const GpuModel& model, const Material& m) {
-    const std::vector<std::string> layers =
-        extensions_ ? materialLayers(m) : std::vector<std::string>();
+void GltfRenderer::setMaterial(Shader& program, const GpuModel& model, const Material& m,
+                               const std::vector<std::string>& layers) {
     auto slot = [&](const char* name, const TextureRef& ref, ColorSpace colorSpace, int unit) {
         largestUnit_ = std::max(largestUnit_, unit);
         const bool own = model.bindTexture(ref, colorSpace, unit, white_);
@@ -223,6 +221,16 @@ void GltfRenderer::drawPrimitive(Shader& program, const GpuModel::Primitive& pri
     primitive.mesh.draw();
 }
 
+void GltfRenderer::drawWithMaterial(const GpuModel& model, const GpuModel::Primitive& primitive,
+                                    const glm::mat4& world, const SetFrame& setFrame) {
+    const Material& material = primitive.material;
+    const std::vector<std::string> layers =
+        extensions_ ? materialLayers(material) : std::vector<std::string>();
+    Shader& program = programFor(material, layers, setFrame);
+    setMaterial(program, model, material, layers);
+    drawPrimitive(program, primitive, world);
+}
+
 void GltfRenderer::draw(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,
                         const SetFrame& setFrame) {
     prepared_.clear();
@@ -233,9 +241,7 @@ void GltfRenderer::draw(const GpuModel& model, const glm::mat4& world, const glm
             blended.push_back(&primitive);
             continue;
         }
-        Shader& program = programFor(primitive.material, setFrame);
-        setMaterial(program, model, primitive.material);
-        drawPrimitive(program, primitive, world);
+        drawWithMaterial(model, primitive, world, setFrame);
     }
     // Blended primitives last, the farthest first (by the centre of their bounds, in view
     // space), over what is drawn, without writing depth so none hides another.
@@ -249,9 +255,7 @@ void GltfRenderer::draw(const GpuModel& model, const glm::mat4& world, const glm
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
         for (const GpuModel::Primitive* primitive : blended) {
-            Shader& program = programFor(primitive->material, setFrame);
-            setMaterial(program, model, primitive->material);
-            drawPrimitive(program, *primitive, world);
+            drawWithMaterial(model, *primitive, world, setFrame);
         }
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);

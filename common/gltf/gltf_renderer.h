@@ -72,8 +72,15 @@ public:
               const SetFrame& setFrame);
 
 private:
-    Shader& programFor(const Material& material, const SetFrame& setFrame);
-    void setMaterial(Shader& program, const GpuModel& model, const Material& material);
+    // The program of `layers` (materialLayers of `material`), made current, its units and frame
+    // set before its first primitive of a draw.
+    Shader& programFor(const Material& material, const std::vector<std::string>& layers,
+                       const SetFrame& setFrame);
+    void setMaterial(Shader& program, const GpuModel& model, const Material& material,
+                     const std::vector<std::string>& layers);
+    // Draws one primitive with its material's program.
+    void drawWithMaterial(const GpuModel& model, const GpuModel::Primitive& primitive,
+                          const glm::mat4& world, const SetFrame& setFrame);
     void drawPrimitive(Shader& program, const GpuModel::Primitive& primitive,
                        const glm::mat4& world);
 
@@ -82,6 +89,7 @@ private:
     const TextureCube* sheenMap_ = nullptr;
     const Texture2D* sheenLut_ = nullptr;
     Texture2D white_;
+    int maxTextureUnits_ = 0;  // GL_MAX_TEXTURE_IMAGE_UNITS
     std::vector<Shader*> prepared_;  // the programs of this draw, units and frame set
     int largestUnit_ = 0;            // the highest unit a draw bound, unbound after it
 };

@@ -110,6 +110,25 @@ TextureRef readTexture(In& in, size_t images) {
     return ref;
 }
 
+// The factors of the advanced material's extensions, in the pack's order: one list that the
+// writer and the reader both walk, so that they cannot disagree.
+template <typename M, typename F>
+void extensionFactors(M& m, F&& f) {
+    f(m.clearcoat.factor);
+    f(m.clearcoat.roughnessFactor);
+    f(m.clearcoat.normalScale);
+    f(m.sheen.colorFactor);
+    f(m.sheen.roughnessFactor);
+    f(m.transmission.factor);
+    f(m.volume.thicknessFactor);
+    f(m.volume.attenuationDistance);
+    f(m.volume.attenuationColor);
+    f(m.ior);
+    f(m.khrSpecular.factor);
+    f(m.khrSpecular.colorFactor);
+    f(m.emissiveStrength);
+}
+
 // Every component finite: what loadModel promises of positions, normals, transforms, bounds
 // and lights, and a pack stands for what it made.
 template <typename V>
@@ -187,19 +206,7 @@ std::string encodeModelPack(const Model& model) {
         out.value(m.glossinessFactor);
         out.u32(std::uint64_t(m.alphaMode));
         out.value(m.alphaCutoff);
-        out.value(m.clearcoat.factor);
-        out.value(m.clearcoat.roughnessFactor);
-        out.value(m.clearcoat.normalScale);
-        out.value(m.sheen.colorFactor);
-        out.value(m.sheen.roughnessFactor);
-        out.value(m.transmission.factor);
-        out.value(m.volume.thicknessFactor);
-        out.value(m.volume.attenuationDistance);
-        out.value(m.volume.attenuationColor);
-        out.value(m.ior);
-        out.value(m.khrSpecular.factor);
-        out.value(m.khrSpecular.colorFactor);
-        out.value(m.emissiveStrength);
+        extensionFactors(m, [&](const auto& value) { out.value(value); });
         out.texts(m.extensions);
     }
     out.u32(model.primitives.size());
@@ -291,19 +298,7 @@ Model decodeModelPack(std::string_view bytes, const fs::path& file, const std::s
         if (alphaMode > 2) in.fail("unknown alpha mode");
         m.alphaMode = AlphaMode(alphaMode);
         m.alphaCutoff = in.value<float>();
-        m.clearcoat.factor = in.value<float>();
-        m.clearcoat.roughnessFactor = in.value<float>();
-        m.clearcoat.normalScale = in.value<float>();
-        m.sheen.colorFactor = in.value<glm::vec3>();
-        m.sheen.roughnessFactor = in.value<float>();
-        m.transmission.factor = in.value<float>();
-        m.volume.thicknessFactor = in.value<float>();
-        m.volume.attenuationDistance = in.value<float>();
-        m.volume.attenuationColor = in.value<glm::vec3>();
-        m.ior = in.value<float>();
-        m.khrSpecular.factor = in.value<float>();
-        m.khrSpecular.colorFactor = in.value<glm::vec3>();
-        m.emissiveStrength = in.value<float>();
+        extensionFactors(m, [&](auto& value) { value = in.value<std::remove_cvref_t<decltype(value)>>(); });
         m.extensions = in.texts();
     }
     model.primitives.resize(in.count(4));
