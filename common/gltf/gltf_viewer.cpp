@@ -1,8 +1,7 @@
 #include "gltf/gltf_viewer.h"
 
 #include <cstdio>
-#include <map>
-#include <memory>
+#include <algorithm>
 #include <optional>
 #include <span>
 #include <vector>
@@ -126,7 +125,15 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         return app.shader("common/gltf.vert", "common/gltf.frag", defines);
     };
     GltfRenderer renderer(programFor, config.extensions);
-    // the sheen's LUT (baked: A is its albedo) and prefiltered environment (with the IBL maps)
+    // the sheen's LUT (baked: A is its albedo) and prefiltered environment (with the IBL maps),
+    // made only for a model with a sheen
+    const bool sheen = config.extensions &&
+                       std::any_of(model.materials.begin(), model.materials.end(),
+                                   [](const Material& m) {
+                                       const auto layers = materialLayers(m);
+                                       return std::find(layers.begin(), layers.end(), "SHEEN") !=
+                                              layers.end();
+                                   });
     std::optional<Texture2D> sheenLut;
     std::optional<TextureCube> sheenMap;
 
@@ -157,7 +164,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         saidAlone = alone > 0 && size_t(alone) > lights.size() ? alone : 0;
         // Made again after R: the cache's keys hold the shaders' code, so an edited IBL shader
         // is computed anew.
-        if (config.extensions && (!sheenLut || app.shadersReloaded())) {
+        if (sheen && (!sheenLut || app.shadersReloaded())) {
             if (!cache) cache.emplace(cacheDir(app.options()));
             sheenLut = brdfLut(*cache, 256, 1024, BrdfLutChannels::ScaleBiasSheen);
             app.bindRenderTarget();
@@ -165,7 +172,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         if (ibl && (!maps || app.shadersReloaded())) {
             if (!cache) cache.emplace(cacheDir(app.options()));
             maps.emplace(*cache, environmentFile(app.options()));
-            if (config.extensions) sheenMap = maps->environment.sheenMap();
+            if (sheen) sheenMap = maps->environment.sheenMap();
             app.addPrecomputeSeconds(cache->computeSeconds());
             app.bindRenderTarget();  // the frame's, after the precomputation's own
         }
