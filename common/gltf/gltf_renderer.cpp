@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "base/error.h"
+#include "gl/framebuffer.h"
 
 namespace pbr {
 
@@ -24,7 +25,9 @@ constexpr LayerSampler kLayerSamplers[] = {
     {"CLEARCOAT", "clearcoatNormalTexture"}, {"SHEEN", "sheenColorTexture"},
     {"SHEEN", "sheenRoughnessTexture"},   {"SHEEN", "sheenLUT"},
     {"SHEEN", "sheenMap"},                {"SPECULAR", "khrSpecularTexture"},
-    {"SPECULAR", "khrSpecularColorTexture"}};
+    {"SPECULAR", "khrSpecularColorTexture"}, {"TRANSMISSION", "transmissionTexture"},
+    {"TRANSMISSION", "thicknessTexture"}, {"TRANSMISSION", "transmissionBackdrop"},
+    {"TRANSMISSION", "transmissionLUT"}};
 
 bool has(const std::vector<std::string>& layers, const std::string& layer) {
     return std::find(layers.begin(), layers.end(), layer) != layers.end();
@@ -43,6 +46,31 @@ int layerUnit(const std::vector<std::string>& layers, const std::string& sampler
 
 }  // namespace
 
+// The transmission backdrop: a float colour texture with its mip chain (the blur a rough surface
+// reads), and a depth buffer, kBackdropSize square.
+struct GltfRenderer::Backdrop {
+    GlFramebuffer framebuffer;
+    GlTexture color;
+    GlRenderbuffer depth;
+    Backdrop() {
+        const int size = kBackdropSize;
+        glBindTexture(GL_TEXTURE_2D, color.id());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, size, size, 0, GL_RGBA, GL_FLOAT, nullptr);
+        glGenerateMipmap(GL_TEXTURE_2D);  // the chain's storage (its texels come with each frame)
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glBindRenderbuffer(GL_RENDERBUFFER, depth.id());
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
+        requireCompleteFramebuffer("transmission backdrop");
+    }
+};
+
 std::vector<std::string> materialLayers(const Material& m) {
     std::vector<std::string> layers;
     if (m.clearcoat.factor > 0.0f) layers.push_back("CLEARCOAT");
@@ -50,6 +78,7 @@ std::vector<std::string> materialLayers(const Material& m) {
         layers.push_back("SHEEN");
     if (m.khrSpecular.texture.present() || m.khrSpecular.colorTexture.present())
         layers.push_back("SPECULAR");
+    if (m.transmission.factor > 0.0f) layers.push_back("TRANSMISSION");
     const bool factors = m.ior != 1.5f || m.khrSpecular.factor != 1.0f ||
                          m.khrSpecular.colorFactor != glm::vec3(1.0f) || m.emissiveStrength != 1.0f;
     if (!layers.empty() || factors) layers.insert(layers.begin(), "GLTF_EXTENSIONS");
@@ -78,8 +107,8 @@ GltfRenderer::GltfRenderer(ProgramFor programFor, bool extensions)
     glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &maxTextureUnits_);
 }
 
-void GltfRenderer::setSheenMaps(const Texture2D* sheenLut, const TextureCube* sheenMap) {
-    sheenLut_ = sheenLut;
+void GltfRenderer::setLayerMaps(const Texture2D* layersLut, const TextureCube* sheenMap) {
+    layersLut_ = layersLut;
     sheenMap_ = sheenMap;
 }
 
@@ -124,15 +153,20 @@ Shader& GltfRenderer::programFor(const Material& material, const std::vector<std
         requireTextureUnits(layers, maxTextureUnits_, material.name);
         setUnits(program, layers);
         setFrame(program);
+        if (backdropPass_) program.set("toneMapper", kLinearRadiance);
         prepared_.push_back(&program);
     }
     if (has(layers, "SHEEN")) {
-        if (!sheenLut_) throw Error("a sheen drawn without the sheen's LUT");
-        sheenLut_->bind(layerUnit(layers, "sheenLUT"));
+        if (!layersLut_) throw Error("a sheen drawn without the layers' LUT");
+        layersLut_->bind(layerUnit(layers, "sheenLUT"));
         if (sheenMap_) {  // read only with image-based light
             sheenMap_->bind(layerUnit(layers, "sheenMap"));
             program.set("sheenMaxLod", float(sheenMap_->levels() - 1));
         }
+    }
+    if (has(layers, "TRANSMISSION")) {
+        if (!layersLut_) throw Error("a transmission drawn without the layers' LUT");
+        layersLut_->bind(layerUnit(layers, "transmissionLUT"));
     }
     return program;
 }
@@ -199,6 +233,27 @@ void GltfRenderer::setMaterial(Shader& program, const GpuModel& model, const Mat
              layerUnit(layers, "sheenRoughnessTexture"));
         largestUnit_ = std::max(largestUnit_, layerUnit(layers, "sheenMap"));
     }
+    if (has(layers, "TRANSMISSION")) {
+        program.set("transmissionFactor", m.transmission.factor);
+        program.set("thicknessFactor", m.volume.thicknessFactor);
+        program.set("attenuationColor", m.volume.attenuationColor);
+        // the extension's infinity (no attenuation) as 0 in the shader
+        program.set("attenuationDistance", std::isfinite(m.volume.attenuationDistance)
+                                               ? m.volume.attenuationDistance
+                                               : 0.0f);
+        slot("transmission", m.transmission.texture, ColorSpace::Linear,
+             layerUnit(layers, "transmissionTexture"));
+        slot("thickness", m.volume.thicknessTexture, ColorSpace::Linear,
+             layerUnit(layers, "thicknessTexture"));
+        const int unit = layerUnit(layers, "transmissionBackdrop");
+        largestUnit_ = std::max(largestUnit_, unit);
+        // drawn before any transmissive primitive (draw), by a pass that leaves them out, and
+        // unbound after the frame: never read while it is the target
+        glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        glBindTexture(GL_TEXTURE_2D, backdrop_ ? backdrop_->color.id() : 0);
+        glBindSampler(GLuint(unit), 0);  // its own filtering, not a glTF sampler's
+        backdropUnit_ = unit;
+    }
     if (has(layers, "SPECULAR")) {
         slot("khrSpecular", m.khrSpecular.texture, ColorSpace::Linear,
              layerUnit(layers, "khrSpecularTexture"));
@@ -231,25 +286,40 @@ void GltfRenderer::drawWithMaterial(const GpuModel& model, const GpuModel::Primi
     drawPrimitive(program, primitive, world);
 }
 
-void GltfRenderer::draw(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,
-                        const SetFrame& setFrame) {
+bool GltfRenderer::transmissive(const Material& material) const {
+    return extensions_ && material.transmission.factor > 0.0f;
+}
+
+void GltfRenderer::drawPass(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,
+                            const SetFrame& setFrame, bool backdrop) {
     prepared_.clear();
-    largestUnit_ = kEmissive;
-    std::vector<const GpuModel::Primitive*> blended;
+    std::vector<const GpuModel::Primitive*> throughs, blended;
     for (const GpuModel::Primitive& primitive : model.primitives()) {
+        if (transmissive(primitive.material)) {
+            if (!backdrop) throughs.push_back(&primitive);
+            continue;
+        }
         if (primitive.material.alphaMode == AlphaMode::Blend) {
             blended.push_back(&primitive);
             continue;
         }
         drawWithMaterial(model, primitive, world, setFrame);
     }
-    // Blended primitives last, the farthest first (by the centre of their bounds, in view
-    // space), over what is drawn, without writing depth so none hides another.
+    // Transmissive and blended primitives, each group the farthest first (by the centre of their
+    // bounds, in view space): a transmissive one over what its backdrop holds, a blended one
+    // without writing depth so none hides another.
     auto depth = [&](const GpuModel::Primitive* p) {
         return (view * world * p->transform * glm::vec4(p->centre, 1.0f)).z;
     };
-    std::stable_sort(blended.begin(), blended.end(),
-                     [&](auto* a, auto* b) { return depth(a) < depth(b); });
+    auto farthestFirst = [&](std::vector<const GpuModel::Primitive*>& primitives) {
+        std::stable_sort(primitives.begin(), primitives.end(),
+                         [&](auto* a, auto* b) { return depth(a) < depth(b); });
+    };
+    farthestFirst(throughs);
+    for (const GpuModel::Primitive* primitive : throughs) {
+        drawWithMaterial(model, *primitive, world, setFrame);
+    }
+    farthestFirst(blended);
     if (!blended.empty()) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
@@ -259,6 +329,43 @@ void GltfRenderer::draw(const GpuModel& model, const glm::mat4& world, const glm
         }
         glDepthMask(GL_TRUE);
         glDisable(GL_BLEND);
+    }
+}
+
+void GltfRenderer::drawBackdrop(const GpuModel& model, const glm::mat4& world,
+                                const glm::mat4& view, const SetFrame& setFrame,
+                                const std::function<void()>& background) {
+    GLint framebuffer = 0, viewport[4] = {};
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    if (!backdrop_) backdrop_ = std::make_shared<Backdrop>();
+    glBindFramebuffer(GL_FRAMEBUFFER, backdrop_->framebuffer.id());
+    glViewport(0, 0, kBackdropSize, kBackdropSize);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);  // the frame's clear colour, linear
+    if (background) background();
+    backdropPass_ = true;
+    drawPass(model, world, view, setFrame, true);
+    backdropPass_ = false;
+    glBindTexture(GL_TEXTURE_2D, backdrop_->color.id());
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+}
+
+void GltfRenderer::draw(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,
+                        const SetFrame& setFrame, const std::function<void()>& background) {
+    largestUnit_ = kEmissive;
+    const auto& primitives = model.primitives();
+    if (std::any_of(primitives.begin(), primitives.end(),
+                    [&](const GpuModel::Primitive& p) { return transmissive(p.material); })) {
+        drawBackdrop(model, world, view, setFrame, background);
+    }
+    drawPass(model, world, view, setFrame, false);
+    if (backdropUnit_ >= 0) {
+        glActiveTexture(GLenum(GL_TEXTURE0 + backdropUnit_));
+        glBindTexture(GL_TEXTURE_2D, 0);
+        backdropUnit_ = -1;
     }
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);

@@ -9,11 +9,19 @@
 //
 // The core material (07, 08) is drawn by one program. The advanced material (sample 10) by one
 // program a set of layers: a material's layers (materialLayers: GLTF_EXTENSIONS, and CLEARCOAT,
-// SHEEN, SPECULAR for those it uses) are #defines, so a layer's code and textures are compiled
-// only into the programs of the materials that use it, and a material without extensions gets
-// the core material's program. Each layer's textures take the units after the IBL maps', in that
-// order (layerUnits).
+// SHEEN, SPECULAR, TRANSMISSION for those it uses) are #defines, so a layer's code and textures
+// are compiled only into the programs of the materials that use it, and a material without
+// extensions gets the core material's program. Each layer's textures take the units after the
+// IBL maps', in that order (layerUnits).
+//
+// A transmissive primitive (KHR_materials_transmission, with KHR_materials_volume) shows what is
+// behind it as the reference viewer and the cookbook draw it: the frame's backdrop first (the
+// caller's background, then every primitive that is not transmissive, as linear radiance) into a
+// float target of kBackdropSize^2 seen by the frame's camera, its mip chain made; then the frame,
+// the transmissive primitives after the opaque ones, back to front, each reading the backdrop
+// along its refracted ray at the blur of its roughness.
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -30,7 +38,8 @@ namespace pbr {
 // The #defines of the advanced material's layers `material` uses: empty for the core material
 // alone; else GLTF_EXTENSIONS (ior, KHR_materials_specular's factors, emissive strength) and
 // CLEARCOAT (a clear coat of factor above 0), SHEEN (a sheen colour other than black), SPECULAR
-// (KHR_materials_specular's textures).
+// (KHR_materials_specular's textures), TRANSMISSION (a transmission factor above 0; the volume
+// goes with it: without transmission the extension has nothing to act on).
 std::vector<std::string> materialLayers(const Material& material);
 // The texture units a program of `layers` needs (the core material's, the IBL maps', each
 // layer's); throws Error("material 'NAME': its layers need N texture units, where this GL has
@@ -46,6 +55,11 @@ public:
     // maps are bound, so no two sampler types ever share a unit.
     static constexpr int kFirstIblUnit = 5;
     static constexpr int kFirstLayerUnit = kFirstIblUnit + 4;
+    // tonemap.glsl's LINEAR_RADIANCE: the "tone mapper" the backdrop is drawn with (the
+    // radiance as it is, for a float target).
+    static constexpr int kLinearRadiance = -2;
+    // The transmission backdrop's width and height (the reference viewer's).
+    static constexpr int kBackdropSize = 1024;
 
     // The program for a set of layers' #defines (empty: the core material's).
     using ProgramFor = std::function<Shader&(const std::vector<std::string>& layers)>;
@@ -59,17 +73,22 @@ public:
     // Whether the layers are drawn from the next draw on (the term views show the core
     // material's terms, without them).
     void setExtensions(bool extensions) { extensions_ = extensions; }
-    // The sheen's maps (sample 10): the LUT whose A is its albedo, and its prefiltered
-    // environment (IblEnvironment::sheenMap; null without image-based light). Kept by pointer.
-    void setSheenMaps(const Texture2D* sheenLut, const TextureCube* sheenMap);
+    // The layers' maps (sample 10): their LUT (BrdfLutChannels::ScaleBiasSheen: the sheen's
+    // albedo in A, and the split sum's scale and bias, which the transmission's Fresnel reads
+    // without image-based light), and the sheen's prefiltered environment
+    // (IblEnvironment::sheenMap; null without image-based light). Kept by pointer.
+    void setLayerMaps(const Texture2D* layersLut, const TextureCube* sheenMap);
 
     // Sets a program's texture units for its layers (draw does, for each program it uses).
     void setUnits(Shader& program, const std::vector<std::string>& layers) const;
     // Uploads up to kMaxLights lights to `program`; returns how many were left out.
     static int setLights(Shader& program, std::span<const PunctualLight> lights);
-    // Draws every primitive of `model`, placed by `world` x its node transform.
+    // Draws every primitive of `model`, placed by `world` x its node transform. With the layers
+    // and a transmissive primitive, the backdrop first: `background` (the sky, drawn with
+    // kLinearRadiance; none: the clear colour alone) and the other primitives into it; then the
+    // frame, into the framebuffer and viewport bound when it was called.
     void draw(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,
-              const SetFrame& setFrame);
+              const SetFrame& setFrame, const std::function<void()>& background = {});
 
 private:
     // The program of `layers` (materialLayers of `material`), made current, its units and frame
@@ -83,15 +102,27 @@ private:
                           const glm::mat4& world, const SetFrame& setFrame);
     void drawPrimitive(Shader& program, const GpuModel::Primitive& primitive,
                        const glm::mat4& world);
+    // One pass over the primitives: the opaque and masked ones, then (unless `backdrop`, which
+    // leaves them out) the transmissive ones, then the blended ones, each group's in glTF's order.
+    void drawPass(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,
+                  const SetFrame& setFrame, bool backdrop);
+    bool transmissive(const Material& material) const;
+    // The backdrop of this frame: drawn, its mips made, the caller's framebuffer bound again.
+    void drawBackdrop(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,
+                      const SetFrame& setFrame, const std::function<void()>& background);
 
     ProgramFor programFor_;
     bool extensions_ = false;
     const TextureCube* sheenMap_ = nullptr;
-    const Texture2D* sheenLut_ = nullptr;
+    const Texture2D* layersLut_ = nullptr;
     Texture2D white_;
     int maxTextureUnits_ = 0;  // GL_MAX_TEXTURE_IMAGE_UNITS
-    std::vector<Shader*> prepared_;  // the programs of this draw, units and frame set
+    std::vector<Shader*> prepared_;  // the programs of this pass, units and frame set
     int largestUnit_ = 0;            // the highest unit a draw bound, unbound after it
+    bool backdropPass_ = false;      // drawing the backdrop: linear radiance out
+    struct Backdrop;                 // its framebuffer, made at the first transmissive draw
+    std::shared_ptr<Backdrop> backdrop_;
+    int backdropUnit_ = -1;          // where a draw bound the backdrop (unbound after it)
 };
 
 // One light for files that bring none: a white directional light of `lux`, from above the

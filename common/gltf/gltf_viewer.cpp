@@ -26,7 +26,8 @@ const std::vector<std::string> kDrawnExtensions = {"KHR_lights_punctual", "KHR_t
 // and those the advanced material's layers add (sample 10)
 const std::vector<std::string> kLayerExtensions = {
     "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_ior",
-    "KHR_materials_specular", "KHR_materials_emissive_strength"};
+    "KHR_materials_specular", "KHR_materials_emissive_strength", "KHR_materials_transmission",
+    "KHR_materials_volume"};
 
 std::string joined(const std::vector<std::string>& names) {
     std::string text;
@@ -125,15 +126,18 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         return app.shader("common/gltf.vert", "common/gltf.frag", defines);
     };
     GltfRenderer renderer(programFor, config.extensions);
-    // the sheen's LUT (baked: A is its albedo) and prefiltered environment (with the IBL maps),
-    // made only for a model with a sheen
-    const bool sheen = config.extensions &&
-                       std::any_of(model.materials.begin(), model.materials.end(),
-                                   [](const Material& m) {
-                                       const auto layers = materialLayers(m);
-                                       return std::find(layers.begin(), layers.end(), "SHEEN") !=
-                                              layers.end();
-                                   });
+    // the layers' LUT (baked: A is the sheen's albedo, RG the split sum's scale and bias), made
+    // only for a model with a sheen or a transmission, and the sheen's prefiltered environment
+    // (with the IBL maps), only for a model with a sheen
+    auto anyMaterialHas = [&](const char* layer) {
+        return config.extensions &&
+               std::any_of(model.materials.begin(), model.materials.end(), [&](const Material& m) {
+                   const auto layers = materialLayers(m);
+                   return std::find(layers.begin(), layers.end(), layer) != layers.end();
+               });
+    };
+    const bool sheen = anyMaterialHas("SHEEN");
+    const bool layersLut = sheen || anyMaterialHas("TRANSMISSION");
     std::optional<Texture2D> sheenLut;
     std::optional<TextureCube> sheenMap;
 
@@ -164,7 +168,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         saidAlone = alone > 0 && size_t(alone) > lights.size() ? alone : 0;
         // Made again after R: the cache's keys hold the shaders' code, so an edited IBL shader
         // is computed anew.
-        if (sheen && (!sheenLut || app.shadersReloaded())) {
+        if (layersLut && (!sheenLut || app.shadersReloaded())) {
             if (!cache) cache.emplace(cacheDir(app.options()));
             sheenLut = brdfLut(*cache, 256, 1024, BrdfLutChannels::ScaleBiasSheen);
             app.bindRenderTarget();
@@ -176,7 +180,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
             app.addPrecomputeSeconds(cache->computeSeconds());
             app.bindRenderTarget();  // the frame's, after the precomputation's own
         }
-        renderer.setSheenMaps(sheenLut ? &*sheenLut : nullptr, sheenMap ? &*sheenMap : nullptr);
+        renderer.setLayerMaps(sheenLut ? &*sheenLut : nullptr, sheenMap ? &*sheenMap : nullptr);
 
         // Without the environment, a dark grey background (linear; the target encodes it); a view
         // on its neutral grey, without the sky.
@@ -201,7 +205,14 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
             if (view == View::Final)
                 skybox.draw(maps->environment.environmentMap(), app.view(), app.projection());
         }
-        renderer.draw(gpuModel, glm::mat4(1.0f), app.view(), setFrame);
+        // a transmissive primitive's backdrop: the same sky, as linear radiance
+        auto background = [&] {
+            if (!ibl || view != View::Final) return;
+            skybox.setToneMapping(GltfRenderer::kLinearRadiance, 1.0f);
+            skybox.draw(maps->environment.environmentMap(), app.view(), app.projection());
+            skybox.setToneMapping(toneMapper, exposure);
+        };
+        renderer.draw(gpuModel, glm::mat4(1.0f), app.view(), setFrame, background);
         if (!app.flag("--model")) {
             for (const GltfViewerConfig::Label& label : config.defaultModelLabels) {
                 app.label(model.boundsMin + label.atBounds * (model.boundsMax - model.boundsMin),

@@ -28,8 +28,9 @@ struct GltfViewerConfig {
     // Where the orbit camera starts on the default model (without --camera); unset: it frames
     // the model's bounds.
     std::optional<glm::vec3> defaultModelCamera{};
-    // Draws the advanced material's layers (sample 10: KHR_materials_clearcoat, _sheen, _ior,
-    // _specular, _emissive_strength); 07 and 08 draw the core material alone.
+    // Draws the advanced material's layers (sample 10: KHR_materials_clearcoat, _sheen,
+    // _transmission, _volume, _ior, _specular, _emissive_strength); 07 and 08 draw the core
+    // material alone.
     bool extensions = false;
 };
 

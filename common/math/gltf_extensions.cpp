@@ -92,19 +92,51 @@ double sheenAlbedoQuadrature(double NdotV, double sheenRoughness) {
     });
 }
 
+float iorScaledRoughness(float roughness, float ior) {
+    return roughness * std::clamp(2.0f * ior - 2.0f, 0.0f, 1.0f);
+}
+
+glm::vec3 volumeRay(const glm::vec3& N, const glm::vec3& V, float thickness, float ior,
+                    const glm::vec3& modelScale) {
+    return glm::normalize(glm::refract(-V, N, 1.0f / std::max(ior, 1.0f))) * thickness * modelScale;
+}
+
+glm::vec3 volumeAttenuation(const glm::vec3& radiance, float distance,
+                            const glm::vec3& attenuationColor, float attenuationDistance) {
+    if (attenuationDistance <= 0.0f || distance <= 0.0f) return radiance;
+    return radiance * glm::pow(attenuationColor, glm::vec3(distance / attenuationDistance));
+}
+
+glm::vec3 transmissionDirect(const glm::vec3& N, const glm::vec3& V, const glm::vec3& L,
+                             const glm::vec3& F0, float F90, float roughness, float ior) {
+    const glm::vec3 mirrored = L - 2.0f * N * glm::dot(L, N);
+    const glm::vec3 H = glm::normalize(mirrored + V);
+    const float NdotL = std::clamp(glm::dot(N, mirrored), 0.0f, 1.0f);
+    const float NdotV = std::clamp(glm::dot(N, V), 0.0f, 1.0f);
+    const float alpha = std::max(iorScaledRoughness(roughness * roughness, ior), kMinGgxAlpha);
+    const glm::vec3 F =
+        F0 + (F90 - F0) * std::pow(1.0f - std::clamp(glm::dot(V, H), 0.0f, 1.0f), 5.0f);
+    return (1.0f - F) *
+           (NdotL * D_GGX(std::clamp(glm::dot(N, H), 0.0f, 1.0f), alpha) * V_GGX(NdotL, NdotV, alpha));
+}
+
 glm::vec3 emission(const glm::vec3& emissive, float strength, float coatWeight) {
     return emissive * strength * (1.0f - coatWeight);
 }
 
 glm::vec3 layeredDirectLight(const LayeredSurface& s, const glm::vec3& V, const glm::vec3& L,
-                             const glm::vec3& radiance, float sheenAlbedoAtV,
+                             const glm::vec3& radiance, const glm::vec3& exitL,
+                             const glm::vec3& exitRadiance, float sheenAlbedoAtV,
                              float sheenAlbedoAtL) {
+    const GltfSurface surface{glm::vec3(0.0f), s.N,          s.diffuseColor, s.F0,
+                              s.roughness,     s.metalColor, s.metallic,     s.F90};
+    const GltfBrdf b = gltfBrdf(s.N, V, L, surface);
     glm::vec3 base(0.0f);
-    if (glm::dot(s.N, L) > 0.0f) {
-        const GltfSurface surface{glm::vec3(0.0f), s.N,          s.diffuseColor, s.F0,
-                                  s.roughness,     s.metalColor, s.metallic,     s.F90};
-        const GltfBrdf b = gltfBrdf(s.N, V, L, surface);
-        base = (b.diffuse + b.specular) * radiance * b.NdotL;  // gltfDirectLight's, to the bit
+    if (glm::dot(s.N, L) > 0.0f)  // gltfDirectLight's, to the bit, without transmission
+        base = (b.diffuse * (1.0f - s.transmission) + b.specular) * radiance * b.NdotL;
+    if (s.transmission > 0.0f) {
+        base += (1.0f - s.metallic) * s.transmission * s.metalColor * exitRadiance *
+                transmissionDirect(s.N, V, exitL, s.F0, s.F90, s.roughness, s.ior);
     }
     const glm::vec3 sheened =
         sheenDirect(s.N, V, L, s.sheenColor, s.sheenRoughness) * radiance +
@@ -116,12 +148,15 @@ glm::vec3 layeredDirectLight(const LayeredSurface& s, const glm::vec3& V, const 
 
 glm::vec3 layeredAmbientLight(const LayeredSurface& s, const SplitSumReads& base,
                               const SplitSumReads& coat, const glm::vec3& sheenRadiance,
-                              float sheenAlbedoAtV, bool multipleScattering) {
+                              float sheenAlbedoAtV, const glm::vec3& transmitted,
+                              bool multipleScattering) {
     glm::vec3 dielectricAlbedo, metalAlbedo;
     const glm::vec3 dielectricSpecular =
         specularIblF90(s.F0, s.F90, base, multipleScattering, dielectricAlbedo);
     const glm::vec3 metal = specularIblF90(s.metalColor, 1.0f, base, multipleScattering, metalAlbedo);
-    const glm::vec3 diffuse = s.diffuseColor * base.irradiance * (1.0f - dielectricAlbedo);
+    const glm::vec3 diffuse =
+        glm::mix(s.diffuseColor * base.irradiance, s.metalColor * transmitted, s.transmission) *
+        (1.0f - dielectricAlbedo);
     const glm::vec3 core = glm::mix(diffuse + dielectricSpecular, metal, s.metallic);
     const glm::vec3 sheened = s.sheenColor * sheenRadiance * sheenAlbedoAtV +
                               core * (1.0f - max3(s.sheenColor) * sheenAlbedoAtV);

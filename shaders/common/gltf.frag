@@ -30,6 +30,13 @@ uniform sampler2D sheenLUT;   // A: the sheen's albedo at (NdotV, sheen roughnes
 uniform samplerCube sheenMap;  // the environment prefiltered by the sheen's lobe
 uniform float sheenMaxLod;     // its last mip level: sheen roughness 1
 #endif
+#ifdef TRANSMISSION
+uniform sampler2D transmissionBackdrop;  // the scene behind (linear radiance), its mips its blur
+uniform sampler2D transmissionLUT;       // the split sum's scale and bias (RG), without the IBL's
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+#endif
 #endif
 #include "gltf_material.glsl"
 #include "tonemap.glsl"
@@ -37,13 +44,35 @@ uniform float sheenMaxLod;     // its last mip level: sheen roughness 1
 #include "gltf_views.glsl"
 
 #ifdef GLTF_EXTENSIONS
+#ifdef TRANSMISSION
+// What comes through the surface from behind: the backdrop (the opaque scene and the sky, drawn
+// first) where the refracted ray leaves the volume, projected to the screen, read at the mip
+// level of the transmission's roughness (the backdrop's whole width, one texel, at roughness 1),
+// then attenuated along the ray.
+vec3 transmittedBackdrop(LayeredSurface s, vec3 ray)
+{
+    vec4 clip = projection * view * vec4(WorldPos + ray, 1.0);
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    float lod = log2(float(textureSize(transmissionBackdrop, 0).x)) *
+                iorScaledRoughness(s.roughness, s.ior);
+    return volumeAttenuation(textureLod(transmissionBackdrop, uv, lod).rgb, length(ray),
+                             s.attenuationColor, s.attenuationDistance);
+}
+#endif
+
 // The advanced material's light (gltf_extensions.glsl): emission through the coat, each punctual
 // light through the layers, the image-based light through the layers' split sum (the coat's own
-// reads at its normal and roughness, the sheen's from its prefiltered map), times occlusion.
+// reads at its normal and roughness, the sheen's from its prefiltered map, the transmission's
+// from the backdrop), times occlusion.
 vec3 layeredColor(SurfaceMaterial m)
 {
     LayeredSurface s = readLayeredSurface(m);
     vec3 V = normalize(camPos - WorldPos);
+    vec3 ray = vec3(0.0);  // through the volume (none: thin-walled, or no transmission)
+#ifdef TRANSMISSION
+    vec3 modelScale = vec3(length(model[0].xyz), length(model[1].xyz), length(model[2].xyz));
+    ray = volumeRay(s.N, V, s.thickness, s.ior, modelScale);
+#endif
     float sheenAtV = 0.0;
 #ifdef SHEEN
     sheenAtV = texture(sheenLUT, vec2(clamp(dot(s.N, V), 0.0, 1.0), s.sheenRoughness)).a;
@@ -60,7 +89,16 @@ vec3 layeredColor(SurfaceMaterial m)
 #ifdef SHEEN
             sheenAtL = texture(sheenLUT, vec2(clamp(dot(s.N, L), 0.0, 1.0), s.sheenRoughness)).a;
 #endif
-            color += layeredDirectLight(s, V, L, radiance, sheenAtV, sheenAtL);
+            vec3 exitL = L;
+            vec3 exitRadiance = radiance;
+#ifdef TRANSMISSION
+            if (s.thickness > 0.0)
+                exitRadiance = volumeAttenuation(punctualRadiance(i, WorldPos + ray, exitL),
+                                                 length(ray), s.attenuationColor,
+                                                 s.attenuationDistance);
+#endif
+            color += layeredDirectLight(s, V, L, radiance, exitL, exitRadiance, sheenAtV,
+                                        sheenAtL);
         }
     }
     if (useIbl)
@@ -74,8 +112,27 @@ vec3 layeredColor(SurfaceMaterial m)
 #ifdef SHEEN
         sheenRadiance = textureLod(sheenMap, reflect(-V, s.N), s.sheenRoughness * sheenMaxLod).rgb;
 #endif
-        color += layeredAmbientLight(s, base, coat, sheenRadiance, sheenAtV) * m.occlusion;
+        vec3 transmitted = vec3(0.0);
+#ifdef TRANSMISSION
+        transmitted = transmittedBackdrop(s, ray);
+#endif
+        color += layeredAmbientLight(s, base, coat, sheenRadiance, sheenAtV, transmitted) *
+                 m.occlusion;
     }
+#ifdef TRANSMISSION
+    else
+    {
+        // without the image-based light a black environment, through which what is behind still
+        // comes, under the same layers
+        float NdotV = clamp(dot(s.N, V), 0.0, 1.0);
+        float coatNdotV = clamp(dot(s.clearcoatN, V), 0.0, 1.0);
+        SplitSumReads base = SplitSumReads(NdotV, vec3(0.0), vec3(0.0),
+                                           texture(transmissionLUT, vec2(NdotV, s.roughness)).rg);
+        SplitSumReads coat = SplitSumReads(coatNdotV, vec3(0.0), vec3(0.0), vec2(0.0));
+        color += layeredAmbientLight(s, base, coat, vec3(0.0), sheenAtV,
+                                     transmittedBackdrop(s, ray)) * m.occlusion;
+    }
+#endif
     return color;
 }
 #endif

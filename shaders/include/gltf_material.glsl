@@ -95,6 +95,18 @@ uniform sampler2D sheenRoughnessTexture;  // A
 uniform int sheenRoughnessUvSet;
 uniform mat3 sheenRoughnessUvTransform;
 #endif
+#ifdef TRANSMISSION  // KHR_materials_transmission with KHR_materials_volume
+uniform float transmissionFactor;
+uniform sampler2D transmissionTexture;  // R
+uniform int transmissionUvSet;
+uniform mat3 transmissionUvTransform;
+uniform float thicknessFactor;
+uniform sampler2D thicknessTexture;  // G
+uniform int thicknessUvSet;
+uniform mat3 thicknessUvTransform;
+uniform vec3 attenuationColor;
+uniform float attenuationDistance;  // 0: none (the extension's infinity)
+#endif
 #endif
 
 struct SurfaceMaterial
@@ -193,7 +205,8 @@ SurfaceMaterial readGltfMaterial()
 // The layers over the material read above (gltf_extensions.glsl's LayeredSurface): the
 // dielectric's F0 and F90 from ior and KHR_materials_specular (its factor times its texture's A,
 // its colour times its texture's RGB), the sheen's colour and roughness (texture RGB and A), the
-// clear coat's strength, roughness (texture R and G) and normal; a layer the program lacks is off.
+// clear coat's strength, roughness (texture R and G) and normal, the transmission (texture R) and
+// the volume's thickness (texture G) and attenuation; a layer the program lacks is off.
 LayeredSurface readLayeredSurface(SurfaceMaterial m)
 {
     LayeredSurface s;
@@ -232,6 +245,19 @@ LayeredSurface readLayeredSurface(SurfaceMaterial m)
                                              textureUv(clearcoatRoughnessUvSet, clearcoatRoughnessUvTransform)).g,
                                  0.0, 1.0);
     s.clearcoatN = clearcoatShadingNormal();
+#endif
+    s.transmission = 0.0;
+    s.ior = ior;
+    s.thickness = 0.0;
+    s.attenuationColor = vec3(1.0);
+    s.attenuationDistance = 0.0;
+#ifdef TRANSMISSION
+    s.transmission = transmissionFactor *
+                     texture(transmissionTexture, textureUv(transmissionUvSet, transmissionUvTransform)).r;
+    s.thickness = thicknessFactor *
+                  texture(thicknessTexture, textureUv(thicknessUvSet, thicknessUvTransform)).g;
+    s.attenuationColor = attenuationColor;
+    s.attenuationDistance = attenuationDistance;
 #endif
     return s;
 }

@@ -14,7 +14,10 @@ vec3 gammaCorrect(vec3 color)
 // The tone mappers of sample 07 (mirrored on the CPU by pbr::cpu::toneMap, common/math/tonemap.h,
 // which documents the formulas and their sources). toneMap multiplies by the exposure, maps, and
 // returns linear display values in [0, 1] for an sRGB render target to encode; negative input
-// counts as 0, and an unknown mapper as TONEMAP_NONE.
+// counts as 0, and an unknown mapper as TONEMAP_NONE. LINEAR_RADIANCE is no tone mapper: the
+// radiance itself, without exposure or clamping, for a float render target (sample 10's
+// transmission backdrop, pbr::GltfRenderer::kLinearRadiance).
+const int LINEAR_RADIANCE = -2;
 const int TONEMAP_NONE = 0;
 const int TONEMAP_REINHARD = 1;
 const int TONEMAP_ACES = 2;
@@ -64,6 +67,8 @@ vec3 toneMapKhronosNeutral(vec3 color)
 
 vec3 toneMap(vec3 color, int mapper, float exposure)
 {
+    if (mapper == LINEAR_RADIANCE)
+        return color;
     color = max(color * exposure, vec3(0.0));
     if (mapper == TONEMAP_REINHARD) color = reinhard(color);
     else if (mapper == TONEMAP_ACES) color = toneMapAces(color);

@@ -227,5 +227,14 @@ TEST(ModelFile, A07SaysWhichMaterialUsesWhatItDoesNotDraw) {
     EXPECT_EQ(notes[0].find("KHR_texture_transform"), std::string::npos) << notes[0];
 }
 
+// 10 draws all seven of them: the same file, no note of an extension not drawn.
+TEST(ModelFile, A10DrawsEveryMaterialExtensionItReads) {
+    const fs::path dir = testOutputDir("model_extensions_10");
+    const Outcome o = run("10_gltf_advanced_materials", writeMaterialExtensionsFile(dir),
+                          dir / "extensions.png", {"--no-ibl"});
+    ASSERT_FALSE(o.refused) << o.render.run.err;
+    EXPECT_EQ(o.render.run.err.find("not drawn"), std::string::npos) << o.render.run.err;
+}
+
 }  // namespace
 }  // namespace pbr::test

@@ -1175,6 +1175,13 @@ void main()
     else if (row == 3)
         FragColor = vec4(clearcoatFresnel(iorToF0(ior), V.z), sheenAlbedoScaling(sheenColor, V.z, L.z),
                          coatOver(vec3(L.z), vec3(V.z), roughness).x, emission(sheenColor, 4.0, roughness).y);
+    else if (row == 6)
+        FragColor = vec4(transmissionDirect(N, V, vec3(L.xy, -L.z), f.F0, f.F90, roughness, ior).xz,
+                         iorScaledRoughness(roughness, ior),
+                         volumeAttenuation(vec3(2.0), 2.0 * L.z, vec3(0.2, 0.5, 0.9), 0.7 * roughness).z);
+    else if (row == 7)
+        FragColor = vec4(volumeRay(normalize(vec3(0.3, 0.1, 1.0)), V, 0.8 * L.z, ior, vec3(1.0, 2.0, 0.5)),
+                         iorScaledRoughness(roughness * roughness, 1.2 + 0.1 * V.z));
     else
     {
         LayeredSurface s;
@@ -1191,18 +1198,25 @@ void main()
         s.clearcoatRoughness = 0.5 * roughness;
         s.clearcoatN = N;
         s.clearcoatF0 = iorToF0(ior);
+        s.transmission = 0.7 * roughness;
+        s.ior = ior;
+        s.thickness = 0.5;
+        s.attenuationColor = vec3(0.9, 0.5, 0.2);
+        s.attenuationDistance = 0.4;
         SplitSumReads base = SplitSumReads(dot(s.N, V), vec3(0.5, 0.6, 0.7), vec3(2.0, 1.5, 1.0) * L.z,
                                            vec2(0.6, 0.1) * V.z);
         SplitSumReads coat = SplitSumReads(V.z, vec3(0.0), vec3(1.0, 2.0, 3.0) * L.z, vec2(0.7, 0.05));
         if (row == 4)
-            FragColor = vec4(layeredDirectLight(s, V, L, vec3(1.0, 0.8, 0.6), 0.5 * V.z, 0.5 * L.z), 0.0);
+            FragColor = vec4(layeredDirectLight(s, V, L, vec3(1.0, 0.8, 0.6), vec3(L.xy, -L.z),
+                                                vec3(0.5, 0.7, 0.9), 0.5 * V.z, 0.5 * L.z), 0.0);
         else
-            FragColor = vec4(layeredAmbientLight(s, base, coat, vec3(0.3, 0.2, 0.1), 0.5 * V.z), 0.0);
+            FragColor = vec4(layeredAmbientLight(s, base, coat, vec3(0.3, 0.2, 0.1), 0.5 * V.z,
+                                                 vec3(0.4, 0.3, 0.2) * V.z), 0.0);
     }
 }
 )");
     Shader shader(shaderDir() / "ibl/fullscreen.vert", fragment);
-    constexpr int kRows = 6;
+    constexpr int kRows = 8;
     const TestTarget target(kCount, kRows, GL_RGBA32F, false, "layers target");
     glDisable(GL_DEPTH_TEST);
     shader.set("directions", 0);
@@ -1212,7 +1226,9 @@ void main()
     const glm::vec3 N(0.0f, 0.0f, 1.0f), sheenColor(1.0f, 0.5f, 0.25f);
     std::array<std::array<double, 4>, kRows> worst{};
     auto tolerance = [](int row, int c) {
-        return (row == 0 && c < 2) || (row == 1 && c < 3) || row == 4 ? 5e-3 : 1e-4;
+        return (row == 0 && c < 2) || (row == 1 && c < 3) || row == 4 || (row == 6 && c < 2)
+                   ? 5e-3
+                   : 1e-4;
     };
     for (const float roughness : {0.05f, 0.3f, 0.7f, 1.0f}) {
         shader.set("roughness", roughness);
@@ -1240,6 +1256,14 @@ void main()
             s.clearcoatRoughness = 0.5f * roughness;
             s.clearcoatN = N;
             s.clearcoatF0 = cpu::iorToF0(ior);
+            s.transmission = 0.7f * roughness;
+            s.ior = ior;
+            s.thickness = 0.5f;
+            s.attenuationColor = glm::vec3(0.9f, 0.5f, 0.2f);
+            s.attenuationDistance = 0.4f;
+            const glm::vec3 behind(L.x, L.y, -L.z);
+            const glm::vec3 attenuated = cpu::volumeAttenuation(
+                glm::vec3(2.0f), 2.0f * L.z, glm::vec3(0.2f, 0.5f, 0.9f), 0.7f * roughness);
             const cpu::SplitSumReads base{glm::dot(s.N, V), glm::vec3(0.5f, 0.6f, 0.7f),
                                           glm::vec3(2.0f, 1.5f, 1.0f) * L.z,
                                           glm::vec2(0.6f, 0.1f) * V.z};
@@ -1254,12 +1278,20 @@ void main()
                           cpu::sheenAlbedoScaling(sheenColor, V.z, L.z),
                           cpu::coatOver(glm::vec3(L.z), glm::vec3(V.z), roughness).x,
                           cpu::emission(sheenColor, 4.0f, roughness).y),
-                glm::vec4(cpu::layeredDirectLight(s, V, L, glm::vec3(1.0f, 0.8f, 0.6f), 0.5f * V.z,
+                glm::vec4(cpu::layeredDirectLight(s, V, L, glm::vec3(1.0f, 0.8f, 0.6f), behind,
+                                                  glm::vec3(0.5f, 0.7f, 0.9f), 0.5f * V.z,
                                                   0.5f * L.z),
                           0.0f),
                 glm::vec4(cpu::layeredAmbientLight(s, base, coat, glm::vec3(0.3f, 0.2f, 0.1f),
-                                                   0.5f * V.z, true),
-                          0.0f)};
+                                                   0.5f * V.z, glm::vec3(0.4f, 0.3f, 0.2f) * V.z,
+                                                   true),
+                          0.0f),
+                glm::vec4(glm::vec2(cpu::transmissionDirect(N, V, behind, f.F0, f.F90, roughness, ior).x,
+                                    cpu::transmissionDirect(N, V, behind, f.F0, f.F90, roughness, ior).z),
+                          cpu::iorScaledRoughness(roughness, ior), attenuated.z),
+                glm::vec4(cpu::volumeRay(glm::normalize(glm::vec3(0.3f, 0.1f, 1.0f)), V, 0.8f * L.z,
+                                         ior, glm::vec3(1.0f, 2.0f, 0.5f)),
+                          cpu::iorScaledRoughness(roughness * roughness, 1.2f + 0.1f * V.z))};
             for (int row = 0; row < kRows; ++row) {
                 for (int c = 0; c < 4; ++c) {
                     const float gpu = pixels[(size_t(row) * kCount + size_t(i)) * 4 + size_t(c)];

@@ -161,7 +161,8 @@ TEST(GltfExtensions, AWhiteLayeredSurfaceInAWhiteFurnaceNeverReflectsMoreThanArr
                                glm::vec2(splitSumQuadrature(NdotV, s.clearcoatRoughness))};
             for (const bool multiple : {false, true}) {
                 const glm::vec3 ambient =
-                    layeredAmbientLight(s, base, coat, glm::vec3(1.0f), atV, multiple);
+                    layeredAmbientLight(s, base, coat, glm::vec3(1.0f), atV, glm::vec3(0.0f),
+                                        multiple);
                 EXPECT_LE(ambient.x, 1.0f + 1e-3f) << "roughness " << roughness << ", NdotV "
                                                     << NdotV << ", multiple " << multiple;
                 EXPECT_GE(ambient.x, 0.5f) << "roughness " << roughness << ", NdotV " << NdotV;
@@ -170,6 +171,7 @@ TEST(GltfExtensions, AWhiteLayeredSurfaceInAWhiteFurnaceNeverReflectsMoreThanArr
             const double direct =
                 integrateOverLights(NdotV, alpha, [&](const glm::dvec3& V, const glm::dvec3& L) {
                     return double(layeredDirectLight(s, glm::vec3(V), glm::vec3(L),
+                                                     glm::vec3(1.0f), glm::vec3(L),
                                                      glm::vec3(1.0f), atV,
                                                      float(sheenTable.at(L.z)))
                                       .x);
@@ -200,14 +202,63 @@ TEST(GltfExtensions, WithoutLayersTheLightIsTheCoreMaterials) {
         const GltfSurface core =
             metallicRoughnessSurface(glm::vec3(0.0f), N, s.diffuseColor, metallic, 0.4f);
         const glm::vec3 radiance(2.0f, 1.5f, 1.0f);
-        EXPECT_EQ(layeredDirectLight(s, V, L, radiance, 0.3f, 0.2f),
+        EXPECT_EQ(layeredDirectLight(s, V, L, radiance, L, radiance, 0.3f, 0.2f),
                   gltfDirectLight(N, V, L, radiance, core));
         const SplitSumReads reads{glm::dot(N, V), glm::vec3(0.5f, 0.6f, 0.7f),
                                   glm::vec3(1.2f, 0.9f, 0.4f), glm::vec2(0.6f, 0.1f)};
         const GltfAmbient ambient =
             gltfAmbient(core, reads.irradiance, reads.prefilteredColor, reads.envBRDF, true);
-        EXPECT_EQ(layeredAmbientLight(s, reads, reads, glm::vec3(3.0f), 0.3f, true),
+        EXPECT_EQ(layeredAmbientLight(s, reads, reads, glm::vec3(3.0f), 0.3f, glm::vec3(5.0f), true),
                   glm::mix(ambient.diffuse + ambient.dielectricSpecular, ambient.metal, metallic));
+    }
+}
+
+// A white dielectric that transmits all it does not reflect (KHR_materials_transmission 1, thin-
+// walled, ior 1.5: the transmission lobe as rough as the reflection's), lit by one light from
+// every direction on both sides: reflection and transmission share the GGX lobe, each light's
+// 1 - F going through, so together they return exactly the lobe's own directional albedo (the
+// integral of D V NdotL, no Fresnel), the same for any F0. Under a white environment that the
+// backdrop shows too, the layers' image-based light returns what arrives.
+TEST(GltfExtensions, ReflectionAndTransmissionShareTheLobeAndLoseNothing) {
+    for (const float roughness : {0.2f, 0.5f, 0.8f}) {
+        for (const float F0 : {0.04f, 0.5f}) {
+            LayeredSurface s;
+            s.diffuseColor = s.metalColor = glm::vec3(1.0f);
+            s.F0 = glm::vec3(F0);
+            s.roughness = roughness;
+            s.transmission = 1.0f;
+            for (const double NdotV : {0.3, 0.7, 1.0}) {
+                const double alpha =
+                    std::max(double(roughness) * roughness, double(kMinGgxAlpha));
+                // each direction above once as a light in front, once mirrored to behind
+                const double both =
+                    integrateOverLights(NdotV, alpha, [&](const glm::dvec3& V, const glm::dvec3& L) {
+                        const glm::vec3 in(L), behind(L.x, L.y, -L.z), v(V);
+                        const glm::vec3 front =
+                            layeredDirectLight(s, v, in, glm::vec3(1.0f), in, glm::vec3(0.0f), 0, 0);
+                        const glm::vec3 through = layeredDirectLight(
+                            s, v, behind, glm::vec3(0.0f), behind, glm::vec3(1.0f), 0, 0);
+                        return double(front.x + through.x);
+                    });
+                const double lobe =
+                    integrateOverLights(NdotV, alpha, [&](const glm::dvec3& V, const glm::dvec3& L) {
+                        const double NdotH = glm::normalize(V + L).z;
+                        return double(D_GGX(float(NdotH), float(alpha)) *
+                                      V_GGX(float(L.z), float(V.z), float(alpha))) *
+                               L.z;
+                    });
+                EXPECT_NEAR(both, lobe, 2e-3 * lobe)
+                    << "roughness " << roughness << ", F0 " << F0 << ", NdotV " << NdotV;
+                const SplitSumReads white{float(NdotV), glm::vec3(1.0f), glm::vec3(1.0f),
+                                          glm::vec2(splitSumQuadrature(NdotV, roughness))};
+                for (const bool multiple : {false, true}) {
+                    const glm::vec3 ambient =
+                        layeredAmbientLight(s, white, white, glm::vec3(0.0f), 0.0f,
+                                            glm::vec3(1.0f), multiple);
+                    EXPECT_NEAR(ambient.x, 1.0f, 1e-5f) << "roughness " << roughness;
+                }
+            }
+        }
     }
 }
 

@@ -511,14 +511,16 @@ TEST(GltfFeatures, AMaterialsLayersNeedTheirTextureUnits) {
     EXPECT_EQ(textureUnitsNeeded({}), 9);
     EXPECT_EQ(textureUnitsNeeded({"GLTF_EXTENSIONS", "CLEARCOAT"}), 12);
     EXPECT_EQ(textureUnitsNeeded({"GLTF_EXTENSIONS", "SHEEN"}), 13);
-    const std::vector<std::string> all = {"GLTF_EXTENSIONS", "CLEARCOAT", "SHEEN", "SPECULAR"};
-    EXPECT_EQ(textureUnitsNeeded(all), 18);
+    EXPECT_EQ(textureUnitsNeeded({"GLTF_EXTENSIONS", "TRANSMISSION"}), 13);
+    const std::vector<std::string> all = {"GLTF_EXTENSIONS", "CLEARCOAT", "SHEEN", "SPECULAR",
+                                          "TRANSMISSION"};
+    EXPECT_EQ(textureUnitsNeeded(all), 22);
     EXPECT_NO_THROW(requireTextureUnits(all, 32, "Fabric"));
     try {
         requireTextureUnits(all, 16, "Fabric");
         ADD_FAILURE() << "no error";
     } catch (const Error& e) {
-        EXPECT_STREQ(e.what(), "material 'Fabric': its layers need 18 texture units, where this "
+        EXPECT_STREQ(e.what(), "material 'Fabric': its layers need 22 texture units, where this "
                                "GL has 16");
     }
 }
