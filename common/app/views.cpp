@@ -46,6 +46,11 @@ constexpr Named kNames[] = {
     {View::FScaleBias, "f-scale-bias"},
     {View::Visibility, "visibility"},
     {View::MultipleScattering, "multiple-scattering"},
+    {View::Clearcoat, "clearcoat"},
+    {View::Sheen, "sheen"},
+    {View::SheenScaling, "sheen-scaling"},
+    {View::Transmission, "transmission"},
+    {View::Transmitted, "transmitted"},
 };
 }  // namespace
 
@@ -102,6 +107,15 @@ constexpr Caption kCaptions[] = {
      ViewScale::AsItIs},
     {View::MultipleScattering, "the share multiple scattering adds to the lobes",
      ViewScale::Compressed},
+    {View::Clearcoat, "the coat's share, clearcoat x Fc(N_coat . V)", ViewScale::AsItIs},
+    {View::Sheen, "the sheen's light, its lobe summed over the lights plus its image-based part",
+     ViewScale::Compressed},
+    {View::SheenScaling, "what the base keeps under the sheen, 1 - max(sheenColor) E(NdotV)",
+     ViewScale::AsItIs},
+    {View::Transmission, "transmission x texture, the diffuse's share light through replaces",
+     ViewScale::AsItIs},
+    {View::Transmitted, "the light through the surface alone, tone-mapped as the picture",
+     ViewScale::None},
 };
 
 const Caption* captionOf(View view) {

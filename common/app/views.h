@@ -59,6 +59,13 @@ enum class View {
     // 07's and 08's: the BRDF's visibility term, and the image-based light's multiple scattering
     Visibility = 28,
     MultipleScattering = 29,
+    // sample 10's layers: the coat's share, the sheen's light and what it leaves the base, the
+    // transmission's share and the light that comes through the surface
+    Clearcoat = 30,
+    Sheen = 31,
+    SheenScaling = 32,
+    Transmission = 33,
+    Transmitted = 34,
 };
 
 // The views of each sample, in the order --help lists them.
@@ -70,6 +77,18 @@ inline constexpr View kGltfViews[] = {
     View::NdotL, View::Direct, View::Irradiance, View::Prefiltered, View::Lut,
     View::AmbientDiffuse, View::AmbientSpecular, View::Ambient, View::Visibility,
     View::MultipleScattering};
+// 10's: 07's, and its layers' (the core material's terms are the core material's, without them).
+inline constexpr View kLayerViews[] = {
+    View::Final, View::BaseColor, View::Normal, View::Metallic, View::Roughness, View::Occlusion,
+    View::Emissive, View::F0, View::D, View::G, View::F, View::Specular, View::Diffuse,
+    View::NdotL, View::Direct, View::Irradiance, View::Prefiltered, View::Lut,
+    View::AmbientDiffuse, View::AmbientSpecular, View::Ambient, View::Visibility,
+    View::MultipleScattering, View::Clearcoat, View::Sheen, View::SheenScaling,
+    View::Transmission, View::Transmitted};
+// Whether a view shows one of 10's layers (drawn with the layers' programs).
+constexpr bool isLayerView(View view) {
+    return view >= View::Clearcoat;
+}
 // The direct-light samples' (01, 02): the text's constant ambient term among them.
 inline constexpr View kDirectLightViews[] = {
     View::Final, View::Albedo, View::Normal, View::Metallic, View::Roughness, View::Ao, View::F0,

@@ -81,6 +81,8 @@ public:
 
     // Sets a program's texture units for its layers (draw does, for each program it uses).
     void setUnits(Shader& program, const std::vector<std::string>& layers) const;
+    // Whether draw is drawing the backdrop now (for SetFrame: the picture, whatever the view).
+    bool drawingBackdrop() const { return backdropPass_; }
     // Uploads up to kMaxLights lights to `program`; returns how many were left out.
     static int setLights(Shader& program, std::span<const PunctualLight> lights);
     // Draws every primitive of `model`, placed by `world` x its node transform. With the layers

@@ -91,7 +91,9 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
                                       "alone in a view (0: all of them)",
                                       0, GltfRenderer::kMaxLights, 0)
                         .asLive());
-    flags.insert(flags.end(), {viewFlag(kGltfViews).asLive(), viewGainFlag()});
+    flags.insert(flags.end(),
+                 {(config.extensions ? viewFlag(kLayerViews) : viewFlag(kGltfViews)).asLive(),
+                  viewGainFlag()});
     flags.push_back(FlagSpec::toggle("--single-scattering",
                                      "image-based light without the multiple-scattering energy "
                                      "(rough metals darken, as in 05)")
@@ -150,8 +152,9 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         const float exposure = app.flagNumber("--exposure");
         const View view = viewNamed(app.flagChoice("--view"));
         viewDefinitions = viewDefines(view);
-        // a term view shows the core material's terms: its program, without the layers
-        renderer.setExtensions(config.extensions && view == View::Final);
+        // a term view of the core material shows its terms: its program, without the layers; a
+        // view of the layers, theirs
+        renderer.setExtensions(config.extensions && (view == View::Final || isLayerView(view)));
         // --light K: that light alone (none where the file has fewer)
         const int alone = app.flagInt("--light");
         std::span<const PunctualLight> shown = punctual ? lights : std::span<const PunctualLight>();
@@ -196,7 +199,11 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
             shader.set("multipleScattering", app.options().has("--single-scattering") ? 0 : 1);
             shader.set("toneMapper", toneMapper);
             shader.set("exposure", exposure);
-            selectView(shader, view, app.flagNumber("--gain"));
+            if (renderer.drawingBackdrop()) {  // the picture, what comes through the glass
+                if (view != View::Final) shader.set("termView", int(View::Final));
+            } else {
+                selectView(shader, view, app.flagNumber("--gain"));
+            }
             if (ibl) maps->use(shader, GltfRenderer::kFirstIblUnit);
         };
         if (ibl) {
@@ -207,7 +214,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         }
         // a transmissive primitive's backdrop: the same sky, as linear radiance
         auto background = [&] {
-            if (!ibl || view != View::Final) return;
+            if (!ibl) return;
             skybox.setToneMapping(GltfRenderer::kLinearRadiance, 1.0f);
             skybox.draw(maps->environment.environmentMap(), app.view(), app.projection());
             skybox.setToneMapping(toneMapper, exposure);

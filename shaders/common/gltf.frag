@@ -63,8 +63,9 @@ vec3 transmittedBackdrop(LayeredSurface s, vec3 ray)
 // The advanced material's light (gltf_extensions.glsl): emission through the coat, each punctual
 // light through the layers, the image-based light through the layers' split sum (the coat's own
 // reads at its normal and roughness, the sheen's from its prefiltered map, the transmission's
-// from the backdrop), times occlusion.
-vec3 layeredColor(SurfaceMaterial m)
+// from the backdrop), times occlusion. Without `through`, no light comes through the surface
+// (the transmitted view is the difference).
+vec3 layeredColor(SurfaceMaterial m, bool through)
 {
     LayeredSurface s = readLayeredSurface(m);
     vec3 V = normalize(camPos - WorldPos);
@@ -90,9 +91,9 @@ vec3 layeredColor(SurfaceMaterial m)
             sheenAtL = texture(sheenLUT, vec2(clamp(dot(s.N, L), 0.0, 1.0), s.sheenRoughness)).a;
 #endif
             vec3 exitL = L;
-            vec3 exitRadiance = radiance;
+            vec3 exitRadiance = through ? radiance : vec3(0.0);
 #ifdef TRANSMISSION
-            if (s.thickness > 0.0)
+            if (s.thickness > 0.0 && through)
                 exitRadiance = volumeAttenuation(punctualRadiance(i, WorldPos + ray, exitL),
                                                  length(ray), s.attenuationColor,
                                                  s.attenuationDistance);
@@ -114,7 +115,8 @@ vec3 layeredColor(SurfaceMaterial m)
 #endif
         vec3 transmitted = vec3(0.0);
 #ifdef TRANSMISSION
-        transmitted = transmittedBackdrop(s, ray);
+        if (through)
+            transmitted = transmittedBackdrop(s, ray);
 #endif
         color += layeredAmbientLight(s, base, coat, sheenRadiance, sheenAtV, transmitted) *
                  m.occlusion;
@@ -129,12 +131,49 @@ vec3 layeredColor(SurfaceMaterial m)
         SplitSumReads base = SplitSumReads(NdotV, vec3(0.0), vec3(0.0),
                                            texture(transmissionLUT, vec2(NdotV, s.roughness)).rg);
         SplitSumReads coat = SplitSumReads(coatNdotV, vec3(0.0), vec3(0.0), vec2(0.0));
-        color += layeredAmbientLight(s, base, coat, vec3(0.0), sheenAtV,
-                                     transmittedBackdrop(s, ray)) * m.occlusion;
+        vec3 transmitted = through ? transmittedBackdrop(s, ray) : vec3(0.0);
+        color += layeredAmbientLight(s, base, coat, vec3(0.0), sheenAtV, transmitted) *
+                 m.occlusion;
     }
 #endif
     return color;
 }
+
+#ifdef TERM_VIEWS
+// Sample 10's views of its layers (defined in its README): the coat's share and the transmission
+// as they are; the sheen's light (its lobe over the lights, its image-based part) as x / (1 + x);
+// what the base keeps under the sheen at the view, as it is; the light through the surface alone,
+// tone-mapped as the picture (the picture less the picture without it).
+vec3 layeredView(int which, SurfaceMaterial m, vec3 V)
+{
+    LayeredSurface s = readLayeredSurface(m);
+    if (which == VIEW_CLEARCOAT)
+        return encodedAs(vec3(s.clearcoat * clearcoatFresnel(s.clearcoatF0, dot(s.clearcoatN, V))));
+    if (which == VIEW_TRANSMISSION)
+        return encodedAs(vec3(s.transmission));
+    if (which == VIEW_TRANSMITTED)
+        return toneMap(layeredColor(m, true) - layeredColor(m, false), toneMapper, exposure);
+    float sheenAtV = 0.0;
+#ifdef SHEEN
+    sheenAtV = texture(sheenLUT, vec2(clamp(dot(s.N, V), 0.0, 1.0), s.sheenRoughness)).a;
+#endif
+    if (which == VIEW_SHEEN_SCALING)
+        return encodedAs(vec3(1.0 - max3(s.sheenColor) * sheenAtV));
+    vec3 sheen = vec3(0.0);
+    for (int i = 0; usePunctual && i < punctualLightCount; ++i)
+    {
+        vec3 L;
+        vec3 radiance = punctualRadiance(i, WorldPos, L);
+        sheen += sheenDirect(s.N, V, L, s.sheenColor, s.sheenRoughness) * radiance;
+    }
+#ifdef SHEEN
+    if (useIbl)
+        sheen += s.sheenColor * sheenAtV * m.occlusion *
+                 textureLod(sheenMap, reflect(-V, s.N), s.sheenRoughness * sheenMaxLod).rgb;
+#endif
+    return encodedAs(viewCompress(sheen));
+}
+#endif
 #endif
 
 void main()
@@ -143,7 +182,7 @@ void main()
     vec3 color = m.baseColor;
 #ifdef GLTF_EXTENSIONS
     if (!unlit)
-        color = layeredColor(m);
+        color = layeredColor(m, true);
 #else
     if (!unlit)
     {
@@ -166,6 +205,13 @@ void main()
 #endif
     FragColor = vec4(toneMap(color, toneMapper, exposure), m.alpha);
 #ifdef TERM_VIEWS  // --view: one input or term of the equation instead (gltf_views.glsl)
-    FragColor.rgb = gltfView(termView, m, normalize(camPos - WorldPos));
+    // (the picture itself where a view's frame draws sample 10's transmission backdrop)
+#ifdef GLTF_EXTENSIONS
+    if (termView >= VIEW_CLEARCOAT)
+        FragColor.rgb = unlit ? vec3(0.0) : layeredView(termView, m, normalize(camPos - WorldPos));
+    else
+#endif
+    if (termView != VIEW_FINAL)
+        FragColor.rgb = gltfView(termView, m, normalize(camPos - WorldPos));
 #endif
 }

@@ -45,6 +45,11 @@ const int VIEW_KD = 26;
 const int VIEW_F_SCALE_BIAS = 27;
 const int VIEW_VISIBILITY = 28;
 const int VIEW_MULTIPLE_SCATTERING = 29;
+const int VIEW_CLEARCOAT = 30;  // sample 10's layers (gltf.frag's layeredView)
+const int VIEW_SHEEN = 31;
+const int VIEW_SHEEN_SCALING = 32;
+const int VIEW_TRANSMISSION = 33;
+const int VIEW_TRANSMITTED = 34;
 
 // The light-dependent terms, summed over the lights (see addDirectTerms).
 struct DirectSums

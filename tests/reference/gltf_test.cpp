@@ -26,6 +26,7 @@
 #include "files/image.h"
 #include "gltf/model.h"
 #include "math/brdf.h"
+#include "math/gltf_extensions.h"
 #include "math/camera.h"
 
 namespace pbr::test {
@@ -298,9 +299,10 @@ std::map<std::string, Image> renderSpheresViews(const fs::path& dir, const std::
                                                 const fs::path& file,
                                                 const std::vector<std::string>& views,
                                                 const std::vector<std::string>& extra = {},
-                                                bool ibl = false) {
-    const ViewRenders renders =
-        renderViews(sample, views, args07(file, spheresEye(loadModel(file)), extra, ibl), dir);
+                                                bool ibl = false,
+                                                std::optional<glm::vec3> eyeAt = std::nullopt) {
+    const glm::vec3 eye = eyeAt.value_or(spheresEye(loadModel(file)));
+    const ViewRenders renders = renderViews(sample, views, args07(file, eye, extra, ibl), dir);
     EXPECT_EQ(renders.run.exitCode, 0) << renders.run.err;
     EXPECT_EQ(renders.run.err.find("GL error"), std::string::npos) << renders.run.err;
     std::map<std::string, Image> images;
@@ -330,9 +332,10 @@ SphereCheck compareSpheres(const fs::path& dir, const std::string& sample, const
                            const std::string& prefix, const SurfaceOf& surfaceOf,
                            const std::vector<std::string>& extra = {},
                            const ShadeSurface& shadeSurface = shadeUnderLights, bool ibl = false,
-                           const Image* rendered = nullptr) {
+                           const Image* rendered = nullptr,
+                           std::optional<glm::vec3> eyeAt = std::nullopt) {
     const Model model = loadModel(file);
-    const glm::vec3 eye = spheresEye(model);
+    const glm::vec3 eye = eyeAt.value_or(spheresEye(model));
     const Image image = rendered ? *rendered : render07(dir, file, eye, extra, sample, ibl);
     const Rays rays(model, eye);
     const ModelRayCaster caster(model, glm::dmat4(1.0));
@@ -514,6 +517,81 @@ TEST(Reference, Gltf07TermViewsMatchTheCpu) {
             compareShowcaseSpheres("view_" + view, solidTexture, {"--view", view},
                                    punctualViewShade(view), false, &images[view]);
         expectViewCompared("--view " + view, check, 1500, 10);
+    }
+}
+
+// Sample 10's views of its layers on its showcase (image-based light off, the file's sun), every
+// other pixel of each of its 35 spheres against the CPU (by the definitions in 10's
+// README, from common/math/gltf_extensions.cpp; the sheen's albedo E by quadrature, not from the
+// baked table the shader reads, at NdotV from 0.1, short of the table's steep grazing end, which
+// its own test checks), within 2/255: the coat's share, the sheen's light, what the base keeps
+// under the sheen, the transmission's share. A material without the layer shows none of it.
+TEST(Reference, Gltf10LayerViewsMatchTheCpu) {
+    const fs::path file = modelDir() / "advanced_materials.gltf";
+    const glm::vec3 eye(0.0f, 1.4f, 9.3f);  // the sample's own start: every row in the frame
+    const std::vector<std::string> views = {"clearcoat", "sheen", "sheen-scaling", "transmission"};
+    std::map<std::string, Image> images =
+        renderSpheresViews(testOutputDir("reference_10_layer_views"), "10_gltf_advanced_materials",
+                           file, views, {}, false, eye);
+    const Model model = loadModel(file);
+    const Material* current = nullptr;
+    const SurfaceOf surfaceOf = [&](const Model&, const Material& material,
+                                    const glm::vec3& position,
+                                    const glm::vec3& normal) -> std::optional<cpu::GltfSurface> {
+        current = &material;
+        if (material.name == "backdrop") return std::nullopt;
+        return cpu::metallicRoughnessSurface(position, normal,
+                                             glm::vec3(material.baseColorFactor),
+                                             material.metallicFactor, material.roughnessFactor);
+    };
+    // E(NdotV, sheen roughness) at NdotV in steps of 1/50, by quadrature, and linearly between
+    std::map<std::pair<int, int>, double> albedo;
+    auto albedoAt = [&](float NdotV, float roughness) {
+        const int r = int(std::lround(roughness * 1000.0f));
+        auto at = [&](int step) {
+            const std::pair<int, int> key{step, r};
+            if (!albedo.count(key)) albedo[key] = cpu::sheenAlbedoQuadrature(step / 50.0, r / 1000.0);
+            return albedo[key];
+        };
+        const int below = std::min(int(NdotV * 50.0f), 49);
+        const double t = NdotV * 50.0 - below;
+        return (1.0 - t) * at(below) + t * at(below + 1);
+    };
+    for (const std::string& view : views) {
+        SCOPED_TRACE("--view " + view);
+        ASSERT_TRUE(images.count(view));
+        const ShadeSurface shade = [&](const cpu::GltfSurface& s, const glm::vec3& at,
+                                       std::span<const PunctualLight> lights)
+            -> std::optional<glm::vec3> {
+            const Material& m = *current;
+            const glm::vec3 N = s.normal, V = glm::normalize(at - s.position);
+            if (view == "clearcoat") {
+                return encodedAs(glm::dvec3(
+                    m.clearcoat.factor *
+                    cpu::clearcoatFresnel(cpu::iorToF0(m.ior), glm::dot(N, V))));
+            }
+            if (view == "transmission") return encodedAs(glm::dvec3(m.transmission.factor));
+            if (view == "sheen-scaling") {
+                const float NdotV = std::clamp(glm::dot(N, V), 0.0f, 1.0f);
+                if (cpu::max3(m.sheen.colorFactor) == 0.0f) return encodedAs(glm::dvec3(1.0));
+                if (NdotV < 0.1f) return std::nullopt;
+                return encodedAs(glm::dvec3(1.0 - cpu::max3(m.sheen.colorFactor) *
+                                                      albedoAt(NdotV, m.sheen.roughnessFactor)));
+            }
+            glm::dvec3 sheen(0.0);  // "sheen"
+            for (const PunctualLight& light : lights) {
+                glm::vec3 L;
+                const glm::vec3 radiance = cpu::punctualRadiance(light, s.position, L);
+                sheen += glm::dvec3(cpu::sheenDirect(N, V, L, m.sheen.colorFactor,
+                                                     m.sheen.roughnessFactor) *
+                                    radiance);
+            }
+            return encodedAs(sheen / (1.0 + sheen));
+        };
+        const SphereCheck check =
+            compareSpheres(testOutputDir("reference_10_layer_views"), "10_gltf_advanced_materials",
+                           file, "", surfaceOf, {}, shade, false, &images[view], eye);
+        expectViewCompared("--view " + view, check, 20000, 35);
     }
 }
 
