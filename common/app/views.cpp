@@ -51,6 +51,8 @@ constexpr Named kNames[] = {
     {View::SheenScaling, "sheen-scaling"},
     {View::Transmission, "transmission"},
     {View::Transmitted, "transmitted"},
+    {View::ClearcoatNormal, "clearcoat-normal"},
+    {View::VolumeAttenuation, "volume-attenuation"},
 };
 }  // namespace
 
@@ -116,6 +118,11 @@ constexpr Caption kCaptions[] = {
      ViewScale::AsItIs},
     {View::Transmitted, "the light through the surface alone, tone-mapped as the picture",
      ViewScale::None},
+    {View::ClearcoatNormal, "the clear coat's world-space normal N_coat, as 0.5 + 0.5 N_coat",
+     ViewScale::None},
+    {View::VolumeAttenuation,
+     "what the volume leaves along the refracted ray, attenuationColor^(d / attenuationDistance)",
+     ViewScale::AsItIs},
 };
 
 const Caption* captionOf(View view) {

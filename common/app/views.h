@@ -66,6 +66,8 @@ enum class View {
     SheenScaling = 32,
     Transmission = 33,
     Transmitted = 34,
+    ClearcoatNormal = 35,
+    VolumeAttenuation = 36,
 };
 
 // The views of each sample, in the order --help lists them.
@@ -83,11 +85,12 @@ inline constexpr View kLayerViews[] = {
     View::Emissive, View::F0, View::D, View::G, View::F, View::Specular, View::Diffuse,
     View::NdotL, View::Direct, View::Irradiance, View::Prefiltered, View::Lut,
     View::AmbientDiffuse, View::AmbientSpecular, View::Ambient, View::Visibility,
-    View::MultipleScattering, View::Clearcoat, View::Sheen, View::SheenScaling,
-    View::Transmission, View::Transmitted};
-// Whether a view shows one of 10's layers (drawn with the layers' programs).
+    View::MultipleScattering, View::Clearcoat, View::ClearcoatNormal, View::Sheen,
+    View::SheenScaling, View::Transmission, View::Transmitted, View::VolumeAttenuation};
+// Whether 10 draws a view with its layers' programs: the layers' views, and f0 (the F0 that ior
+// and KHR_materials_specular give).
 constexpr bool isLayerView(View view) {
-    return view >= View::Clearcoat;
+    return view >= View::Clearcoat || view == View::F0;
 }
 // The direct-light samples' (01, 02): the text's constant ambient term among them.
 inline constexpr View kDirectLightViews[] = {

@@ -45,6 +45,13 @@ uniform mat4 projection;
 
 #ifdef GLTF_EXTENSIONS
 #ifdef TRANSMISSION
+// The node's scale along each of its axes (the model matrix's columns' lengths): the volume's
+// thickness is given in the mesh's units.
+vec3 nodeScale()
+{
+    return vec3(length(model[0].xyz), length(model[1].xyz), length(model[2].xyz));
+}
+
 // What comes through the surface from behind: the backdrop (the opaque scene and the sky, drawn
 // first) where the refracted ray leaves the volume, projected to the screen, read at the mip
 // level of the transmission's roughness (the backdrop's whole width, one texel, at roughness 1),
@@ -71,8 +78,7 @@ vec3 layeredColor(SurfaceMaterial m, bool through)
     vec3 V = normalize(camPos - WorldPos);
     vec3 ray = vec3(0.0);  // through the volume (none: thin-walled, or no transmission)
 #ifdef TRANSMISSION
-    vec3 modelScale = vec3(length(model[0].xyz), length(model[1].xyz), length(model[2].xyz));
-    ray = volumeRay(s.N, V, s.thickness, s.ior, modelScale);
+    ray = volumeRay(s.N, V, s.thickness, s.ior, nodeScale());
 #endif
     float sheenAtV = 0.0;
 #ifdef SHEEN
@@ -140,17 +146,34 @@ vec3 layeredColor(SurfaceMaterial m, bool through)
 }
 
 #ifdef TERM_VIEWS
-// Sample 10's views of its layers (defined in its README): the coat's share and the transmission
-// as they are; the sheen's light (its lobe over the lights, its image-based part) as x / (1 + x);
-// what the base keeps under the sheen at the view, as it is; the light through the surface alone,
-// tone-mapped as the picture (the picture less the picture without it).
+// Sample 10's views of its layers (defined in its README): F0 from ior and the specular layer, the
+// coat's share and the transmission as they are, the coat's normal as 0.5 + 0.5 N; the sheen's
+// light (its lobe over the lights, its image-based part) as x / (1 + x); what the base keeps
+// under the sheen at the view, and what the volume leaves along the refracted ray, as they are;
+// the light through the surface alone, tone-mapped as the picture (the picture less the picture
+// without it).
 vec3 layeredView(int which, SurfaceMaterial m, vec3 V)
 {
     LayeredSurface s = readLayeredSurface(m);
+    if (which == VIEW_F0)
+        return encodedAs(mix(s.F0, s.metalColor, s.metallic));
+    if (which == VIEW_CLEARCOAT_NORMAL)
+        return encodedAs(0.5 + 0.5 * s.clearcoatN);
+    if (which == VIEW_VOLUME_ATTENUATION)
+    {
+        vec3 kept = vec3(1.0);
+#ifdef TRANSMISSION
+        kept = volumeAttenuation(vec3(1.0), length(volumeRay(s.N, V, s.thickness, s.ior, nodeScale())),
+                                 s.attenuationColor, s.attenuationDistance);
+#endif
+        return encodedAs(kept);
+    }
     if (which == VIEW_CLEARCOAT)
         return encodedAs(vec3(s.clearcoat * clearcoatFresnel(s.clearcoatF0, dot(s.clearcoatN, V))));
     if (which == VIEW_TRANSMISSION)
         return encodedAs(vec3(s.transmission));
+    if (unlit)  // KHR_materials_unlit: no light takes part, so no term of it either
+        return vec3(0.0);
     if (which == VIEW_TRANSMITTED)
         return toneMap(layeredColor(m, true) - layeredColor(m, false), toneMapper, exposure);
     float sheenAtV = 0.0;
@@ -207,8 +230,8 @@ void main()
 #ifdef TERM_VIEWS  // --view: one input or term of the equation instead (gltf_views.glsl)
     // (the picture itself where a view's frame draws sample 10's transmission backdrop)
 #ifdef GLTF_EXTENSIONS
-    if (termView >= VIEW_CLEARCOAT)
-        FragColor.rgb = unlit ? vec3(0.0) : layeredView(termView, m, normalize(camPos - WorldPos));
+    if (termView >= VIEW_CLEARCOAT || termView == VIEW_F0)
+        FragColor.rgb = layeredView(termView, m, normalize(camPos - WorldPos));
     else
 #endif
     if (termView != VIEW_FINAL)

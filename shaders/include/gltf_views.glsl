@@ -25,9 +25,10 @@ vec3 gltfView(int which, SurfaceMaterial m, vec3 V)
     if (which == VIEW_OCCLUSION) return encodedAs(vec3(m.occlusion));
     if (which == VIEW_EMISSIVE) return encodedAs(m.emissive);
     if (which == VIEW_F0) return encodedAs(mix(m.F0, m.baseColor, m.metallic));
-    // sample 10's layers, on a material without them: no coat, sheen or transmission, and the
-    // base keeps all under no sheen
-    if (which == VIEW_SHEEN_SCALING) return vec3(1.0);
+    // sample 10's layers, on a material without them: no coat (its normal the surface's), sheen
+    // or transmission; the base keeps all under no sheen, and nothing is lost in no volume
+    if (which == VIEW_CLEARCOAT_NORMAL) return encodedAs(0.5 + 0.5 * m.N);
+    if (which == VIEW_SHEEN_SCALING || which == VIEW_VOLUME_ATTENUATION) return vec3(1.0);
     if (which >= VIEW_CLEARCOAT) return vec3(0.0);
     // KHR_materials_unlit: no light takes part in the picture (the base colour is it), so every
     // term of the lighting is 0 there.

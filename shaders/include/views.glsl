@@ -50,6 +50,8 @@ const int VIEW_SHEEN = 31;
 const int VIEW_SHEEN_SCALING = 32;
 const int VIEW_TRANSMISSION = 33;
 const int VIEW_TRANSMITTED = 34;
+const int VIEW_CLEARCOAT_NORMAL = 35;
+const int VIEW_VOLUME_ATTENUATION = 36;
 
 // The light-dependent terms, summed over the lights (see addDirectTerms).
 struct DirectSums

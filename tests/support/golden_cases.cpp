@@ -133,6 +133,13 @@ std::vector<GoldenCase> goldenCases() {
                          "07_gltf_metallic_roughness",
                          {"--view", view, "--size", "480x270", "--camera", "0,2.2,5.5"}});
     }
+    // 10's views of its layers on its showcase (10's README, "Term views")
+    for (const char* view : {"clearcoat", "sheen", "sheen-scaling", "transmission", "transmitted",
+                             "clearcoat-normal", "volume-attenuation", "f0"}) {
+        std::string name = std::string("10_view_") + view;
+        std::replace(name.begin(), name.end(), '-', '_');
+        cases.push_back({name, "10_gltf_advanced_materials", {"--view", view, "--size", "480x270"}});
+    }
     for (const char* view : {"f0", "roughness"}) {
         cases.push_back({std::string("08_view_") + view,
                          "08_gltf_specular_glossiness",
