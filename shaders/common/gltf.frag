@@ -108,16 +108,36 @@ vec3 layeredColor(SurfaceMaterial m, bool through)
                                         sheenAtL);
         }
     }
-    if (useIbl)
-    {
-        SplitSumReads base = readSplitSum(s.N, V, s.roughness);
-        SplitSumReads coat = base;
-#ifdef CLEARCOAT
-        coat = readSplitSum(s.clearcoatN, V, s.clearcoatRoughness);
+    // The image-based light; with a transmission, without it too: a black environment, through
+    // which what is behind still comes, under the same layers (the split sum's LUT still weighs it)
+    bool ambient = useIbl;
+#ifdef TRANSMISSION
+    ambient = true;
 #endif
+    if (ambient)
+    {
+        SplitSumReads base, coat;
         vec3 sheenRadiance = vec3(0.0);
+        if (useIbl)
+        {
+            base = readSplitSum(s.N, V, s.roughness);
+            coat = base;
+#ifdef CLEARCOAT
+            coat = readSplitSum(s.clearcoatN, V, s.clearcoatRoughness);
+#endif
 #ifdef SHEEN
-        sheenRadiance = textureLod(sheenMap, reflect(-V, s.N), s.sheenRoughness * sheenMaxLod).rgb;
+            sheenRadiance = textureLod(sheenMap, reflect(-V, s.N), s.sheenRoughness * sheenMaxLod).rgb;
+#endif
+        }
+#ifdef TRANSMISSION
+        else
+        {
+            float NdotV = clamp(dot(s.N, V), 0.0, 1.0);
+            base = SplitSumReads(NdotV, vec3(0.0), vec3(0.0),
+                                 texture(transmissionLUT, vec2(NdotV, s.roughness)).rg);
+            coat = SplitSumReads(clamp(dot(s.clearcoatN, V), 0.0, 1.0), vec3(0.0), vec3(0.0),
+                                 vec2(0.0));
+        }
 #endif
         vec3 transmitted = vec3(0.0);
 #ifdef TRANSMISSION
@@ -127,21 +147,6 @@ vec3 layeredColor(SurfaceMaterial m, bool through)
         color += layeredAmbientLight(s, base, coat, sheenRadiance, sheenAtV, transmitted) *
                  m.occlusion;
     }
-#ifdef TRANSMISSION
-    else
-    {
-        // without the image-based light a black environment, through which what is behind still
-        // comes, under the same layers
-        float NdotV = clamp(dot(s.N, V), 0.0, 1.0);
-        float coatNdotV = clamp(dot(s.clearcoatN, V), 0.0, 1.0);
-        SplitSumReads base = SplitSumReads(NdotV, vec3(0.0), vec3(0.0),
-                                           texture(transmissionLUT, vec2(NdotV, s.roughness)).rg);
-        SplitSumReads coat = SplitSumReads(coatNdotV, vec3(0.0), vec3(0.0), vec2(0.0));
-        vec3 transmitted = through ? transmittedBackdrop(s, ray) : vec3(0.0);
-        color += layeredAmbientLight(s, base, coat, vec3(0.0), sheenAtV, transmitted) *
-                 m.occlusion;
-    }
-#endif
     return color;
 }
 
