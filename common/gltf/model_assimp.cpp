@@ -187,6 +187,25 @@ struct Reader {
         if (m->Get(AI_MATKEY_VOLUME_ATTENUATION_COLOR, attenuation) == AI_SUCCESS)
             out.volume.attenuationColor = {attenuation.r, attenuation.g, attenuation.b};
         m->Get(AI_MATKEY_REFRACTI, out.ior);
+        keepVolumeInRange(out);
+    }
+
+    // The transmission and the volume as their specifications bound them, so that the shading
+    // never meets what no file may hold (a number past a float, 1e39, reads as infinity): the
+    // transmission factor in [0, 1] (no number: 0), a thickness of 0 or more that is a number
+    // (else 0, thin-walled), an attenuation colour in [0, 1] (no number: 1) and a distance above
+    // 0 (else infinity, no attenuation).
+    static void keepVolumeInRange(Material& out) {
+        auto within = [](float v, float lo, float hi, float otherwise) {
+            return std::isnan(v) ? otherwise : std::clamp(v, lo, hi);
+        };
+        out.transmission.factor = within(out.transmission.factor, 0.0f, 1.0f, 0.0f);
+        float& thickness = out.volume.thicknessFactor;
+        thickness = std::isfinite(thickness) && thickness > 0.0f ? thickness : 0.0f;
+        for (int c = 0; c < 3; ++c)
+            out.volume.attenuationColor[c] = within(out.volume.attenuationColor[c], 0.0f, 1.0f, 1.0f);
+        float& distance = out.volume.attenuationDistance;
+        distance = distance > 0.0f ? distance : INFINITY;  // NaN, 0 or less: none
     }
 
     MeshData mesh(const aiMesh* in) {

@@ -507,6 +507,41 @@ TEST(GltfFeatures, ExtensionListsNameWhatIsNotDrawn) {
 // IBL maps' four, then each layer's own (the clear coat's three textures; the sheen's two and its
 // LUT and map; the specular layer's two): every layer on, 18, past WebGL 2's 16, is one line
 // naming the material.
+// A transmission and a volume out of their specifications' ranges are read at their nearest
+// ends, so the shading never meets them: a factor of 1.5 as 1, a negative thickness and one past a
+// float (1e39, infinity as a float) as 0 (thin-walled), a colour of 2, -1 and 1e39 as 1, 0 and 1,
+// a negative distance as none (infinity). The expected values are the specifications' bounds.
+TEST(GltfFeatures, VolumeFactorsOutOfRangeAreReadAtTheirEnds) {
+    const fs::path dir = testOutputDir("gltf_features_volume_range");
+    const Model model = loadModel(writeTextFile(dir, "volume.gltf", R"({"asset":{"version":"2.0"},
+"extensionsUsed":["KHR_materials_transmission","KHR_materials_volume"],
+)" + squareBuffersJson(1.0f) + R"(
+"materials":[
+ {"name":"negative","extensions":{"KHR_materials_transmission":{"transmissionFactor":1.5},
+  "KHR_materials_volume":{"thicknessFactor":-2,"attenuationDistance":-1,
+   "attenuationColor":[2,-1,1e39]}}},
+ {"name":"huge","extensions":{"KHR_materials_transmission":{"transmissionFactor":-1},
+  "KHR_materials_volume":{"thicknessFactor":1e39,"attenuationDistance":0.5,
+   "attenuationColor":[0.5,0.25,1]}}}],
+"meshes":[{"primitives":[)" + squarePrimitiveJson(0) + "," + squarePrimitiveJson(1) + R"(]}],
+"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})"));
+    const Material* negative = nullptr;
+    const Material* huge = nullptr;
+    for (const Material& m : model.materials) {
+        if (m.name == "negative") negative = &m;
+        if (m.name == "huge") huge = &m;
+    }
+    ASSERT_TRUE(negative && huge);
+    EXPECT_EQ(negative->transmission.factor, 1.0f);
+    EXPECT_EQ(negative->volume.thicknessFactor, 0.0f);
+    EXPECT_EQ(negative->volume.attenuationColor, glm::vec3(1.0f, 0.0f, 1.0f));
+    EXPECT_EQ(negative->volume.attenuationDistance, INFINITY);
+    EXPECT_EQ(huge->transmission.factor, 0.0f);
+    EXPECT_EQ(huge->volume.thicknessFactor, 0.0f);
+    EXPECT_EQ(huge->volume.attenuationColor, glm::vec3(0.5f, 0.25f, 1.0f));
+    EXPECT_EQ(huge->volume.attenuationDistance, 0.5f);
+}
+
 TEST(GltfFeatures, AMaterialsLayersNeedTheirTextureUnits) {
     EXPECT_EQ(textureUnitsNeeded({}), 9);
     EXPECT_EQ(textureUnitsNeeded({"GLTF_EXTENSIONS", "CLEARCOAT"}), 12);
