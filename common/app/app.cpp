@@ -274,9 +274,17 @@ int App::flagInt(const std::string& name) const {
 }
 
 float App::flagNumber(const std::string& name) const {
+    const std::optional<float> value = flagNumberIfAny(name);
+    if (!value) throw Error(name + " has no default: the sample must ask whether it was given");
+    return *value;
+}
+
+std::optional<float> App::flagNumberIfAny(const std::string& name) const {
     const FlagSpec& spec = sampleFlag(name);
     if (spec.kind != FlagSpec::Kind::Number) throw Error(name + " is not a number flag");
-    return float(parseNumberFlag(name, flag(name).value_or(spec.defaultValue), spec.min, spec.max));
+    const auto value = flag(name);
+    if (!value && spec.defaultValue.empty()) return std::nullopt;
+    return float(parseNumberFlag(name, value.value_or(spec.defaultValue), spec.min, spec.max));
 }
 
 std::optional<std::vector<float>> App::flagNumbers(const std::string& name) const {

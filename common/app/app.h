@@ -75,6 +75,8 @@ public:
     std::string flagChoice(const std::string& name) const;
     int flagInt(const std::string& name) const;
     float flagNumber(const std::string& name) const;
+    // A Number flag's value when given, or its default when it has one (FlagSpec::withoutDefault).
+    std::optional<float> flagNumberIfAny(const std::string& name) const;
     // A Numbers flag's values (its FlagSpec's count of them), when given or when it has a
     // default; a flag of three numbers with a default as a vector.
     std::optional<std::vector<float>> flagNumbers(const std::string& name) const;

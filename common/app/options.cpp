@@ -279,6 +279,12 @@ FlagSpec FlagSpec::asLive() const {
     return spec;
 }
 
+FlagSpec FlagSpec::withoutDefault() const {
+    FlagSpec spec = *this;
+    spec.defaultValue.clear();
+    return spec;
+}
+
 FlagSpec FlagSpec::refusing(std::function<std::string(const std::string& value)> why) const {
     FlagSpec spec = *this;
     spec.refuse = std::move(why);

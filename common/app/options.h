@@ -58,6 +58,10 @@ struct FlagSpec {
     FlagSpec asLive() const;
     // The same choice flag, with other words for some of its choices.
     FlagSpec withAliases(std::vector<std::pair<std::string, std::string>> words) const;
+    // The same number flag without a default: not given, the sample keeps a value of its own (10's
+    // --clearcoat: each material's factor from its file). The panel and the page show it unset
+    // until a value is chosen, and can unset it again.
+    FlagSpec withoutDefault() const;
     // The same flag with a check of its own (see `refuse`).
     FlagSpec refusing(std::function<std::string(const std::string& value)> why) const;
 };

@@ -44,6 +44,8 @@ namespace {
 constexpr float kPanelWidth = 430.0f;
 constexpr float kMargin = 10.0f;
 constexpr float kStops = 8.0f;  // a slider in stops spans 2^-8 to 2^8
+// A slider's text for a flag without a default that is not given.
+constexpr const char* kNotGiven = "(not given)";
 
 // A slider's value as the flag's text: three significant digits, so that the command line stays
 // readable (and the value the sample reads is the text's, as from the command line).
@@ -144,7 +146,9 @@ bool Panel::State::control(const FlagSpec& spec, std::map<std::string, std::stri
             break;
         }
         case FlagSpec::Kind::Number: {
-            float value = float(std::strtod(text.c_str(), nullptr));
+            // a flag without a default, not given: the slider at its low end, saying so
+            const bool unset = text.empty();
+            float value = unset ? float(spec.min) : float(std::strtod(text.c_str(), nullptr));
             const ImGuiSliderFlags flags = ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp;
             noteFrame(spec.name, width);
             if (spec.min > 0.0 && spec.max / spec.min > 1000.0) {
@@ -154,7 +158,8 @@ bool Panel::State::control(const FlagSpec& spec, std::map<std::string, std::stri
                 const float least = std::max(float(std::log2(spec.min)), -kStops);
                 const float most = std::min(float(std::log2(spec.max)), kStops);
                 float stops = std::clamp(std::log2(value), least, most);
-                if (ImGui::SliderFloat(label, &stops, least, most, "%+.1f stops", flags)) {
+                if (ImGui::SliderFloat(label, &stops, least, most,
+                                       unset ? kNotGiven : "%+.1f stops", flags)) {
                     const std::string next =
                         flagNumberText(float(std::exp2(std::round(stops * 10.0f) / 10.0f)));
                     if (next != text) {
@@ -164,8 +169,8 @@ bool Panel::State::control(const FlagSpec& spec, std::map<std::string, std::stri
                 }
                 break;
             }
-            if (ImGui::SliderFloat(label, &value, float(spec.min), float(spec.max), "%.3g",
-                                   flags)) {
+            if (ImGui::SliderFloat(label, &value, float(spec.min), float(spec.max),
+                                   unset ? kNotGiven : "%.3g", flags)) {
                 const std::string next = sliderText(value);
                 if (next != text) {
                     values[spec.name] = next;
@@ -176,12 +181,15 @@ bool Panel::State::control(const FlagSpec& spec, std::map<std::string, std::stri
         }
         case FlagSpec::Kind::Numbers: {
             // (the flag's text passed its checks: given, the default, or taken by setLiveFlag)
-            std::vector<double> numbers = parseNumbersFlag(spec, text);
+            // (or, for a flag without a default, not given: each at its low end, saying so)
+            const bool unset = text.empty();
+            std::vector<double> numbers = unset ? std::vector<double>(size_t(spec.count), spec.min)
+                                                : parseNumbersFlag(spec, text);
             std::vector<float> floats(numbers.begin(), numbers.end());
             const float min = float(spec.min), max = float(spec.max);
             noteFrame(spec.name, width);
             if (ImGui::SliderScalarN(label, ImGuiDataType_Float, floats.data(), int(floats.size()),
-                                     &min, &max, "%.3g",
+                                     &min, &max, unset ? "-" : "%.3g",
                                      ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp)) {
                 std::string next;
                 for (const float f : floats) next += (next.empty() ? "" : ",") + sliderText(f);
@@ -213,6 +221,20 @@ bool Panel::State::control(const FlagSpec& spec, std::map<std::string, std::stri
             break;
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec.help.c_str());
+    // A number flag without a default, given: a button that takes it back to not given.
+    const bool numeric =
+        spec.kind == FlagSpec::Kind::Number || spec.kind == FlagSpec::Kind::Numbers;
+    if (numeric && spec.defaultValue.empty() && values.count(spec.name)) {
+        ImGui::SameLine();
+        ImGui::PushID(label);
+        if (ImGui::SmallButton("unset")) {
+            values.erase(spec.name);
+            changed = true;
+        }
+        noteItem(spec.name + " unset");
+        ImGui::PopID();
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to not given: %s", spec.help.c_str());
+    }
     return changed;
 }
 

@@ -85,6 +85,33 @@ std::vector<std::string> materialLayers(const Material& m) {
     return layers;
 }
 
+Material withLayerFactors(const Material& material, const LayerFactors& f) {
+    Material m = material;
+    const std::vector<std::string> layers = materialLayers(material);
+    if (has(layers, "CLEARCOAT")) {
+        m.clearcoat.factor = f.clearcoat.value_or(m.clearcoat.factor);
+        m.clearcoat.roughnessFactor = f.clearcoatRoughness.value_or(m.clearcoat.roughnessFactor);
+    }
+    if (has(layers, "SHEEN")) {
+        m.sheen.colorFactor = f.sheenColor.value_or(m.sheen.colorFactor);
+        m.sheen.roughnessFactor = f.sheenRoughness.value_or(m.sheen.roughnessFactor);
+    }
+    if (has(layers, "TRANSMISSION")) {
+        m.transmission.factor = f.transmission.value_or(m.transmission.factor);
+        m.volume.thicknessFactor = f.thickness.value_or(m.volume.thicknessFactor);
+        m.volume.attenuationColor = f.attenuationColor.value_or(m.volume.attenuationColor);
+        m.volume.attenuationDistance =
+            f.attenuationDistance.value_or(m.volume.attenuationDistance);
+    }
+    {  // defined for every material (its default: no extension)
+        m.ior = f.ior.value_or(m.ior);
+        m.khrSpecular.factor = f.specular.value_or(m.khrSpecular.factor);
+        m.khrSpecular.colorFactor = f.specularColor.value_or(m.khrSpecular.colorFactor);
+        m.emissiveStrength = f.emissiveStrength.value_or(m.emissiveStrength);
+    }
+    return m;
+}
+
 int textureUnitsNeeded(const std::vector<std::string>& layers) {
     int units = GltfRenderer::kFirstLayerUnit;
     for (const LayerSampler& entry : kLayerSamplers) units += has(layers, entry.layer) ? 1 : 0;
@@ -278,7 +305,8 @@ void GltfRenderer::drawPrimitive(Shader& program, const GpuModel::Primitive& pri
 
 void GltfRenderer::drawWithMaterial(const GpuModel& model, const GpuModel::Primitive& primitive,
                                     const glm::mat4& world, const SetFrame& setFrame) {
-    const Material& material = primitive.material;
+    const Material material =
+        extensions_ ? withLayerFactors(primitive.material, layerFactors_) : primitive.material;
     const std::vector<std::string> layers =
         extensions_ ? materialLayers(material) : std::vector<std::string>();
     Shader& program = programFor(material, layers, setFrame);
@@ -287,7 +315,9 @@ void GltfRenderer::drawWithMaterial(const GpuModel& model, const GpuModel::Primi
 }
 
 bool GltfRenderer::transmissive(const Material& material) const {
-    return extensions_ && material.transmission.factor > 0.0f;
+    // (a transmission given live applies to the materials with one: withLayerFactors)
+    return extensions_ && material.transmission.factor > 0.0f &&
+           layerFactors_.transmission.value_or(1.0f) > 0.0f;
 }
 
 void GltfRenderer::drawPass(const GpuModel& model, const glm::mat4& world, const glm::mat4& view,

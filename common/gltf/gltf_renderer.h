@@ -22,6 +22,7 @@
 // along its refracted ray at the blur of its roughness.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -41,6 +42,26 @@ namespace pbr {
 // (KHR_materials_specular's textures), TRANSMISSION (a transmission factor above 0; the volume
 // goes with it: without transmission the extension has nothing to act on).
 std::vector<std::string> materialLayers(const Material& material);
+// The layers' factors changed live (10's flags --clearcoat, --ior, ...): each one given replaces
+// that factor in every material that has its layer, and leaves the others as their files have
+// them (a plain material is given no clear coat, a backdrop no transmission). A clear coat, a
+// sheen, a transmission: by the factor that makes the layer (materialLayers), the volume's with
+// the transmission. The index of refraction, KHR_materials_specular's factors and the emissive
+// strength are every material's (one without the extension has its default: 1.5, 1, 1). A
+// factor taken to 0 takes its layer away with it, as in a file.
+struct LayerFactors {
+    std::optional<float> clearcoat{}, clearcoatRoughness{};
+    std::optional<glm::vec3> sheenColor{};
+    std::optional<float> sheenRoughness{};
+    std::optional<float> transmission{}, thickness{};
+    std::optional<glm::vec3> attenuationColor{};
+    std::optional<float> attenuationDistance{};
+    std::optional<float> ior{}, specular{};
+    std::optional<glm::vec3> specularColor{};
+    std::optional<float> emissiveStrength{};
+};
+Material withLayerFactors(const Material& material, const LayerFactors& factors);
+
 // The texture units a program of `layers` needs (the core material's, the IBL maps', each
 // layer's); throws Error("material 'NAME': its layers need N texture units, where this GL has
 // M") past `available` (GL_MAX_TEXTURE_IMAGE_UNITS: 16 in WebGL 2, often 32 natively).
@@ -73,6 +94,9 @@ public:
     // Whether the layers are drawn from the next draw on (the term views show the core
     // material's terms, without them).
     void setExtensions(bool extensions) { extensions_ = extensions; }
+    // The factors every frame's materials take from here rather than from their files (none by
+    // default).
+    void setLayerFactors(const LayerFactors& factors) { layerFactors_ = factors; }
     // The layers' maps (sample 10): their LUT (BrdfLutChannels::ScaleBiasSheen: the sheen's
     // albedo in A, and the split sum's scale and bias, which the transmission's Fresnel reads
     // without image-based light), and the sheen's prefiltered environment
@@ -115,6 +139,7 @@ private:
 
     ProgramFor programFor_;
     bool extensions_ = false;
+    LayerFactors layerFactors_;
     const TextureCube* sheenMap_ = nullptr;
     const Texture2D* layersLut_ = nullptr;
     Texture2D white_;

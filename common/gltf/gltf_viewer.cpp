@@ -98,6 +98,48 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
                                      "image-based light without the multiple-scattering energy "
                                      "(rough metals darken, as in 05)")
                         .asLive());
+    if (config.extensions) {
+        // The layers' factors, live (withLayerFactors): each one given replaces that factor in
+        // every material with its extension; not given, each material's own from its file.
+        auto factor = [](const char* name, const char* valueName, const std::string& help,
+                         double min, double max) {
+            return FlagSpec::number(name, valueName, help + " (not given: each material's own)",
+                                    min, max, min)
+                .withoutDefault()
+                .asLive();
+        };
+        auto colour = [](const char* name, const std::string& help) {
+            return FlagSpec::numbers(name, "R,G,B", help + " (not given: each material's own)", 3,
+                                     0.0, 1.0)
+                .asLive();
+        };
+        flags.insert(
+            flags.end(),
+            {factor("--clearcoat", "F", "the clear coat's factor of the clear-coated materials",
+                    0.0, 1.0),
+             factor("--clearcoat-roughness", "R", "the clear coat's roughness of the clear-coated materials", 0.0, 1.0),
+             colour("--sheen-color", "the sheen's colour of the materials with a sheen (linear)"),
+             factor("--sheen-roughness", "R", "the sheen's roughness of the materials with a sheen", 0.0, 1.0),
+             factor("--transmission", "F",
+                    "the share of light through the surface of the transmissive materials", 0.0,
+                    1.0),
+             factor("--thickness", "T",
+                    "the volume's thickness of the transmissive materials, in the mesh's units (0: thin-walled)", 0.0, 10.0),
+             colour("--attenuation-color",
+                    "the colour white light turns after --attenuation-distance in a transmissive volume"),
+             factor("--attenuation-distance", "D",
+                    "the distance in a transmissive volume after which light has the attenuation colour",
+                    1e-3, 1e3),
+             factor("--ior", "N",
+                    "every material's index of refraction (F0 = ((N-1)/(N+1))^2)",
+                    1.0, 3.0),
+             factor("--specular", "F",
+                    "every material's KHR_materials_specular factor", 0.0, 1.0),
+             colour("--specular-color", "every material's KHR_materials_specular colour"),
+             factor("--emissive-strength", "S",
+                    "every material's emissive strength (emission is factor x strength)",
+                    0.0, 100.0)});
+    }
     App app(argc, argv,
             {.name = config.name,
              .title = config.title,
@@ -155,6 +197,26 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         // a term view of the core material shows its terms: its program, without the layers; a
         // view of the layers, theirs
         renderer.setExtensions(config.extensions && (view == View::Final || isLayerView(view)));
+        if (config.extensions) {
+            auto colour = [&](const char* name) -> std::optional<glm::vec3> {
+                const auto numbers = app.flagNumbers(name);
+                if (!numbers) return std::nullopt;
+                return glm::vec3((*numbers)[0], (*numbers)[1], (*numbers)[2]);
+            };
+            renderer.setLayerFactors(
+                {.clearcoat = app.flagNumberIfAny("--clearcoat"),
+                 .clearcoatRoughness = app.flagNumberIfAny("--clearcoat-roughness"),
+                 .sheenColor = colour("--sheen-color"),
+                 .sheenRoughness = app.flagNumberIfAny("--sheen-roughness"),
+                 .transmission = app.flagNumberIfAny("--transmission"),
+                 .thickness = app.flagNumberIfAny("--thickness"),
+                 .attenuationColor = colour("--attenuation-color"),
+                 .attenuationDistance = app.flagNumberIfAny("--attenuation-distance"),
+                 .ior = app.flagNumberIfAny("--ior"),
+                 .specular = app.flagNumberIfAny("--specular"),
+                 .specularColor = colour("--specular-color"),
+                 .emissiveStrength = app.flagNumberIfAny("--emissive-strength")});
+        }
         // --light K: that light alone (none where the file has fewer)
         const int alone = app.flagInt("--light");
         std::span<const PunctualLight> shown = punctual ? lights : std::span<const PunctualLight>();

@@ -251,6 +251,30 @@ TEST(Panel, ACheckboxSwitchesTheFlag) {
     expectFrameIsTheCommands(changed, dir);
 }
 
+// 10's layer factors have no default (each material's own, from its file): given, a button beside
+// the slider takes the flag back to not given, and the frame is the file's again.
+TEST(Panel, ANumberWithoutADefaultIsTakenBackByItsButton) {
+    const fs::path dir = testOutputDir("panel_unset");
+    const std::string sample = "10_gltf_advanced_materials";
+    const std::vector<std::string> args = {"--size", "960x540", "--msaa", "0"};
+    std::vector<std::string> given = args;
+    given.insert(given.end(), {"--clearcoat", "0.3"});
+    const auto controls = layoutOf(sample, dir, given);
+    ASSERT_TRUE(controls.count("--clearcoat unset")) << "no button to take --clearcoat back";
+    const std::string button = controls.at("--clearcoat unset").at(0.5);
+    const PanelRun taken =
+        runScripted(sample, {"-", hover(button), hold(button), hover(button)}, dir, "taken", given);
+    ASSERT_EQ(taken.run.exitCode, 0) << taken.run.err;
+    std::printf("after the click: %s\n", taken.command.c_str());
+    EXPECT_FALSE(valueIn(taken.command, "--clearcoat")) << taken.command;
+    EXPECT_FALSE(taken.controls.count("--clearcoat unset")) << "the button stayed";
+    const PanelRun untouched = runScripted(sample, {"-"}, dir, "untouched", args);
+    const std::string frame = readBytes(taken.image);
+    ASSERT_FALSE(frame.empty());
+    EXPECT_TRUE(frame == readBytes(untouched.image))
+        << "the frame after the click is not the file's own clear coats'";
+}
+
 // 07's exposure, a factor from 0.001 to 10000, slides in stops (-8 to +8, a tenth at a time):
 // from the middle (1, 0 stops) to three quarters of the way is +4 stops, a factor of 16.
 TEST(Panel, ExposureSlidesInStops) {
@@ -492,6 +516,30 @@ const std::vector<LiveCase>& liveCases() {
         return true;
     }();
     (void)viewers;
+    // 10's layers' factors, each given live and taken back to the materials' own (unset)
+    static const bool layers = [&] {
+        const std::optional<std::string> own;  // not given: each material's from the file
+        cases.push_back({"coat10",
+                         "10_gltf_advanced_materials",
+                         {},
+                         {{"--clearcoat", "0.3", own},
+                          {"--clearcoat-roughness", "0.6", own},
+                          {"--sheen-color", "0.1,0.9,0.1", own},
+                          {"--sheen-roughness", "0.9", own},
+                          {"--ior", "2.2", own},
+                          {"--specular", "0.3", own},
+                          {"--specular-color", "0.2,0.9,0.9", own},
+                          {"--emissive-strength", "3", own}}});
+        cases.push_back({"glass10",
+                         "10_gltf_advanced_materials",
+                         {},
+                         {{"--transmission", "0.5", own},
+                          {"--thickness", "0.3", own},
+                          {"--attenuation-color", "0.9,0.2,0.2", own},
+                          {"--attenuation-distance", "0.05", own}}});
+        return true;
+    }();
+    (void)layers;
     return cases;
 }
 

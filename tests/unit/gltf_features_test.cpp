@@ -542,6 +542,66 @@ TEST(GltfFeatures, VolumeFactorsOutOfRangeAreReadAtTheirEnds) {
     EXPECT_EQ(huge->volume.attenuationDistance, 0.5f);
 }
 
+// 10's live factors (--clearcoat, --ior, ...) change a layer's factor only in the materials
+// that have the layer; the index of refraction, the specular layer's factors and the emissive
+// strength in every material (each has them, by default); nothing given changes nothing.
+TEST(GltfFeatures, LiveLayerFactorsChangeOnlyTheMaterialsWithTheLayer) {
+    Material plain;
+    Material coated;
+    coated.clearcoat.factor = 0.5f;
+    coated.clearcoat.roughnessFactor = 0.25f;
+    Material velvet;
+    velvet.sheen.colorFactor = glm::vec3(0.2f, 0.1f, 0.0f);
+    Material glass;
+    glass.transmission.factor = 1.0f;
+    glass.volume.thicknessFactor = 0.5f;
+    const LayerFactors factors = {.clearcoat = 0.75f,
+                                  .clearcoatRoughness = 0.5f,
+                                  .sheenColor = glm::vec3(0.0f, 1.0f, 0.0f),
+                                  .sheenRoughness = 0.9f,
+                                  .transmission = 0.25f,
+                                  .thickness = 2.0f,
+                                  .attenuationColor = glm::vec3(1.0f, 0.5f, 0.25f),
+                                  .attenuationDistance = 3.0f,
+                                  .ior = 2.0f,
+                                  .specular = 0.5f,
+                                  .specularColor = glm::vec3(0.5f, 1.0f, 1.0f),
+                                  .emissiveStrength = 4.0f};
+    for (const Material* m : {&plain, &coated, &velvet, &glass}) {
+        const Material given = withLayerFactors(*m, factors);
+        // every material's
+        EXPECT_EQ(given.ior, 2.0f);
+        EXPECT_EQ(given.khrSpecular.factor, 0.5f);
+        EXPECT_EQ(given.khrSpecular.colorFactor, glm::vec3(0.5f, 1.0f, 1.0f));
+        EXPECT_EQ(given.emissiveStrength, 4.0f);
+        // the layers': only where the material has the layer
+        EXPECT_EQ(given.clearcoat.factor, m == &coated ? 0.75f : 0.0f);
+        EXPECT_EQ(given.clearcoat.roughnessFactor, m == &coated ? 0.5f : 0.0f);
+        EXPECT_EQ(given.sheen.colorFactor,
+                  m == &velvet ? glm::vec3(0.0f, 1.0f, 0.0f) : glm::vec3(0.0f));
+        EXPECT_EQ(given.sheen.roughnessFactor, m == &velvet ? 0.9f : 0.0f);
+        EXPECT_EQ(given.transmission.factor, m == &glass ? 0.25f : 0.0f);
+        EXPECT_EQ(given.volume.thicknessFactor, m == &glass ? 2.0f : 0.0f);
+        EXPECT_EQ(given.volume.attenuationColor,
+                  m == &glass ? glm::vec3(1.0f, 0.5f, 0.25f) : glm::vec3(1.0f));
+        EXPECT_EQ(given.volume.attenuationDistance, m == &glass ? 3.0f : INFINITY);
+        // nothing given: the material as it is
+        const Material same = withLayerFactors(*m, {});
+        EXPECT_EQ(same.clearcoat.factor, m->clearcoat.factor);
+        EXPECT_EQ(same.sheen.colorFactor, m->sheen.colorFactor);
+        EXPECT_EQ(same.transmission.factor, m->transmission.factor);
+        EXPECT_EQ(same.volume.thicknessFactor, m->volume.thicknessFactor);
+        EXPECT_EQ(same.ior, m->ior);
+        EXPECT_EQ(materialLayers(same), materialLayers(*m));
+    }
+    // a factor taken to 0 takes its layer with it, as in a file
+    EXPECT_EQ(materialLayers(withLayerFactors(coated, {.clearcoat = 0.0f})),
+              std::vector<std::string>());
+    EXPECT_EQ(materialLayers(withLayerFactors(plain, {.ior = 1.5f})), std::vector<std::string>());
+    EXPECT_EQ(materialLayers(withLayerFactors(plain, {.ior = 1.3f})),
+              std::vector<std::string>({"GLTF_EXTENSIONS"}));
+}
+
 TEST(GltfFeatures, AMaterialsLayersNeedTheirTextureUnits) {
     EXPECT_EQ(textureUnitsNeeded({}), 9);
     EXPECT_EQ(textureUnitsNeeded({"GLTF_EXTENSIONS", "CLEARCOAT"}), 12);

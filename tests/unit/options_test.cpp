@@ -176,6 +176,29 @@ TEST(Options, SampleFlagValuesAreCheckedByTheirKind) {
     EXPECT_EQ(o.sampleFlags.at("--filter"), "nearest");
 }
 
+// A number flag without a default (10's --clearcoat: each material's own unless given) is
+// checked as any number when given, absent when not, and --help gives it no default.
+TEST(Options, ANumberWithoutADefaultIsAbsentUnlessGiven) {
+    const std::vector<FlagSpec> flags = {
+        FlagSpec::number("--clearcoat", "F", "the clear coat's factor", 0.0, 1.0, 0.0)
+            .withoutDefault()
+            .asLive()};
+    const std::vector<std::string> given = {"--clearcoat", "0.5"};
+    EXPECT_EQ(parseOptions(given, flags).sampleFlags.at("--clearcoat"), "0.5");
+    EXPECT_FALSE(parseOptions(std::vector<std::string>{}, flags).has("--clearcoat"));
+    try {
+        parseOptions(std::vector<std::string>{"--clearcoat", "2"}, flags);
+        ADD_FAILURE() << "no error";
+    } catch (const UsageError& e) {
+        EXPECT_STREQ(e.what(), "--clearcoat: 2 is out of range [0, 1]");
+    }
+    const std::string usage = usageText("10", flags);
+    const size_t line = usage.find("  --clearcoat F");
+    ASSERT_NE(line, std::string::npos) << usage;
+    const std::string own = usage.substr(line, usage.find('\n', line) - line);
+    EXPECT_EQ(own.find("(default"), std::string::npos) << own;
+}
+
 TEST(Options, ChoiceFlagsNameTheirWords) {
     EXPECT_EQ(kSampleFlags[3].valueName, "trilinear|nearest");
 }

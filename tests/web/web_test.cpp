@@ -390,6 +390,7 @@ TEST(Web, KeysAndMouseMoveTheCamera) {
 // exist as a live one.
 struct LiveControl {
     std::string sample, flag, value;
+    std::string before;  // the flag's value in the address when the page opens
 };
 class WebControls : public ::testing::TestWithParam<LiveControl> {};
 
@@ -399,8 +400,11 @@ TEST_P(WebControls, ChangeThePageLive) {
     const std::vector<std::string> args = {"--frames", "3",        "--size",
                                            "320x180",  "--output", "last.png"};
     const std::string name = control.sample.substr(0, 2);
+    // opened with the flag at another value, as two items of the address ("--flag&value")
+    std::vector<std::string> before = args;
+    before.insert(before.end(), {control.flag, control.before});
     const PageRun changed =
-        runPage(control.sample, args, testOutputDir("web_controls_changed_" + name),
+        runPage(control.sample, before, testOutputDir("web_controls_changed_" + name),
                 "set=" + control.flag + ":" + control.value);
     ASSERT_EQ(changed.exitCode, std::optional<int>(0)) << changed.log;
     std::vector<std::string> withFlag = args;
@@ -420,13 +424,17 @@ TEST_P(WebControls, ChangeThePageLive) {
     std::printf("the address after the change: %s\n", changed.address.c_str());
     EXPECT_NE(changed.address.find(control.flag + "=" + control.value), std::string::npos)
         << changed.address;
+    // and the value it replaced is gone with it (once left behind as an item of its own, which
+    // the link's next opening refused as a stray argument)
+    EXPECT_EQ((changed.address + "&").find("&" + control.before + "&"), std::string::npos)
+        << changed.address;
 }
 
 // 01's light count, and 07's tone mapper (the glTF page: its orbit camera's program)
 INSTANTIATE_TEST_SUITE_P(Pages, WebControls,
-                         ::testing::Values(LiveControl{"01_lighting", "--lights", "2"},
+                         ::testing::Values(LiveControl{"01_lighting", "--lights", "2", "1"},
                                            LiveControl{"07_gltf_metallic_roughness", "--tonemap",
-                                                       "aces"}),
+                                                       "aces", "reinhard"}),
                          [](const auto& info) { return info.param.sample; });
 
 // The gallery links every web sample's page, each page is there, and each entry says what it
