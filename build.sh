@@ -206,9 +206,11 @@ timed() {  # timed NAME COMMAND...
     stage_times+=" $name $((SECONDS - start))$busy,"
 }
 
-build() {  # build PRESET
-    cmake --preset "$1" >/dev/null
-    cmake --build --preset "$1" -j "$(nproc)"
+build() {  # build PRESET [CMAKE ARGUMENTS...]
+    local preset="$1"
+    shift
+    cmake --preset "$preset" "$@" >/dev/null
+    cmake --build --preset "$preset" -j "$(nproc)"
 }
 
 # The user's checkout path decides nothing: the sanitizer build is configured, built and tested
@@ -319,7 +321,9 @@ case "${1:-}" in
         echo "build.sh: under AddressSanitizer + UndefinedBehaviorSanitizer, the tests that run every line of ours" >&2
         copy_to_long_checkout
         cd "$repo_dir/$LONG_CHECKOUT"
-        timed "sanitizer build" build asan
+        # (its test programs are the Release build's, compiled, linked with its instrumented
+        # common/: tests/CMakeLists.txt, PBR_TEST_OBJECTS_FROM)
+        timed "sanitizer build" build asan -DPBR_TEST_OBJECTS_FROM="$repo_dir/build/release"
         timed "sanitizer tests" ctest --preset asan -j "$(nproc)"
         cd "$repo_dir"
         # Each fuzz target of our readers (clang, libFuzzer, ASan + UBSan): the kept inputs, then

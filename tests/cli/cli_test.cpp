@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "base/paths.h"
+#include "support/build_paths.h"
 #include "support/golden.h"
 
 namespace pbr::test {
@@ -35,7 +36,7 @@ void replaceInFile(const fs::path& file, const std::string& from, const std::str
 // A copy of shaders/ to break.
 fs::path copyShaders(const fs::path& dir) {
     const fs::path copy = dir / "shaders";
-    fs::copy(PBR_SOURCE_SHADER_DIR, copy, fs::copy_options::recursive);
+    fs::copy(PBR_PATH(PBR_SOURCE_SHADER_DIR), copy, fs::copy_options::recursive);
     return copy;
 }
 

@@ -7,6 +7,7 @@
 
 #include "base/paths.h"
 #include "files/ktx.h"
+#include "support/build_paths.h"
 #include "support/golden.h"
 
 namespace pbr::test {
@@ -104,7 +105,7 @@ TEST(Output, BrdfLutToolWritesAllOrNothing) {
 
     // A broken shader of 06's own: no file at all.
     const fs::path shaders = dir / "shaders";
-    fs::copy(PBR_SOURCE_SHADER_DIR, shaders, fs::copy_options::recursive);
+    fs::copy(PBR_PATH(PBR_SOURCE_SHADER_DIR), shaders, fs::copy_options::recursive);
     std::ofstream(shaders / "06_brdf_lut" / "show_lut.frag", std::ios::app) << "broken\n";
     const RunResult broken = runSample(with({"--output", (dir / "maps" / "lut.png").string()}),
                                        {.setEnv = {{"PBR_SHADER_DIR", shaders.string()}}});

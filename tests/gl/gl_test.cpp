@@ -31,6 +31,7 @@
 #include "math/gltf_extensions.h"
 #include "math/sphere_grid.h"
 #include "math/tonemap.h"
+#include "support/build_paths.h"
 #include "support/mesh_hit.h"
 #include "support/process.h"
 
@@ -207,7 +208,7 @@ TEST(Gl, ReloadKeepsTheUniformValuesAlreadySet) {
 
 TEST(Gl, ReloadOfABrokenEditKeepsTheOldProgram) {
     const fs::path dir = test::testOutputDir("gl_reload_broken");
-    fs::copy(PBR_SOURCE_SHADER_DIR, dir / "shaders", fs::copy_options::recursive);
+    fs::copy(PBR_PATH(PBR_SOURCE_SHADER_DIR), dir / "shaders", fs::copy_options::recursive);
     setenv("PBR_SHADER_DIR", (dir / "shaders").c_str(), 1);
     {
         App app = makeApp(dir);

@@ -9,6 +9,7 @@
 
 #include "base/paths.h"
 #include "context/context.h"
+#include "support/build_paths.h"
 #include "support/golden.h"
 #include "support/golden_cases.h"
 #include "support/test_data.h"
@@ -55,7 +56,8 @@ TEST_P(GoldenImage, MatchesGolden) {
     const SampleRender rendered = render(golden.args, golden.golden + ".png");
     if (!unavailable.empty()) GTEST_SKIP() << unavailable;
     if (golden.minNonBlank > 0.0) expectNotBlank(readImage(rendered.image, 3), golden.minNonBlank);
-    EXPECT_TRUE(matchesGolden(golden.golden, rendered)) << "the sample printed:\n" << rendered.run.err;
+    EXPECT_TRUE(matchesGolden(golden.golden, rendered)) << "the sample printed:\n"
+                                                        << rendered.run.err;
     const std::string bytes = readBytes(rendered.image);
     for (size_t i = 0; i < golden.sameBytesAs.size(); ++i) {
         const SampleRender other =
@@ -81,9 +83,9 @@ std::vector<std::tuple<GoldenCase, std::string>> goldenRuns() {
     const std::vector<std::string> backends = softwareBackends();
     std::vector<std::tuple<GoldenCase, std::string>> runs;
     for (const GoldenCase& golden : goldenCases()) {
-        const bool everywhere = golden.args.empty() &&
-                                (golden.golden == "07_gltf_metallic_roughness" ||
-                                 golden.golden == "10_gltf_advanced_materials");
+        const bool everywhere =
+            golden.args.empty() && (golden.golden == "07_gltf_metallic_roughness" ||
+                                    golden.golden == "10_gltf_advanced_materials");
         for (size_t i = 0; i < backends.size(); ++i) {
             if (i == 0 || everywhere) runs.emplace_back(golden, backends[i]);
         }
@@ -100,7 +102,7 @@ INSTANTIATE_TEST_SUITE_P(Backends, GoldenImage, ::testing::ValuesIn(goldenRuns()
 // The table and the folder agree: every golden picture (with its .json) has a case, and every
 // case has its picture. A golden without a case would never be checked or rewritten.
 TEST(Golden, EveryGoldenFileHasACase) {
-    const GoldenFolder folder = goldenFolder(PBR_GOLDEN_DIR, goldenCases());
+    const GoldenFolder folder = goldenFolder(PBR_PATH(PBR_GOLDEN_DIR), goldenCases());
     EXPECT_EQ(folder.pictures, folder.cases);
     EXPECT_EQ(folder.metadata, folder.cases);
 }
@@ -129,7 +131,7 @@ TEST(Golden, BackendsGiveTheSamePixels) {
 // four gone; the unchanged render (the test above) passes it.
 TEST(Golden, GateRejectsSmallChanges) {
     const fs::path dir = testOutputDir("golden_gate");
-    const Image golden = readImage(fs::path(PBR_GOLDEN_DIR) / "01_lighting.png", 3);
+    const Image golden = readImage(fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / "01_lighting.png", 3);
     const GoldenGate gate;
 
     auto verdictFor = [&](const std::string& file, const std::vector<std::string>& args) {
@@ -186,9 +188,9 @@ TEST(Golden, TangentFramesAgree) {
 TEST(Golden, HeadlessOutputIsBitIdentical) {
     const fs::path dir = testOutputDir("golden_determinism");
     const std::vector<std::string> args = {"--size", "320x180"};
-    for (const std::string sample : {"01_lighting", "02_lighting_textured", "03_gltf_unlit",
-                                     "04_ibl_irradiance", "05_ibl_specular", "06_brdf_lut",
-                                     "07_gltf_metallic_roughness"}) {
+    for (const std::string sample :
+         {"01_lighting", "02_lighting_textured", "03_gltf_unlit", "04_ibl_irradiance",
+          "05_ibl_specular", "06_brdf_lut", "07_gltf_metallic_roughness"}) {
         const SampleRender first = renderSample(sample, dir / (sample + ".first.png"), args);
         const SampleRender second = renderSample(sample, dir / (sample + ".second.png"), args);
         expectCleanRun(first);

@@ -5,13 +5,14 @@
 #include <filesystem>
 #include <string>
 
+#include "support/build_paths.h"
 #include "support/golden.h"
 
 namespace pbr::test {
 
 // Where the fixture keeps the renderer while a ctest run lasts (removed at its end).
 inline std::filesystem::path eglProbeFile() {
-    return std::filesystem::path(PBR_TEST_OUTPUT_DIR) / "gpu" / "egl_renderer.txt";
+    return std::filesystem::path(PBR_PATH(PBR_TEST_OUTPUT_DIR)) / "gpu" / "egl_renderer.txt";
 }
 
 // Draws 16 x 16 pixels through `--backend egl` into `dir`: the GL_RENDERER string, or "" when

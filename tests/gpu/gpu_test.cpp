@@ -16,6 +16,7 @@
 
 #include "base/paths.h"
 #include "gpu/egl_probe.h"
+#include "support/build_paths.h"
 #include "support/golden.h"
 #include "support/golden_cases.h"
 #include "support/test_data.h"
@@ -57,7 +58,8 @@ TEST_P(GpuImage, CloseToGolden) {
     ASSERT_EQ(render.run.exitCode, 0) << render.run.err;
     EXPECT_EQ(render.run.err.find("GL error"), std::string::npos) << render.run.err;
     const Image actual = readImage(render.image, 3);
-    const Image expected = readImage(fs::path(PBR_GOLDEN_DIR) / (golden.golden + ".png"), 3);
+    const Image expected =
+        readImage(fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / (golden.golden + ".png"), 3);
     const GoldenVerdict verdict = judge(actual, expected, kGpuGate);
     std::printf("%s on %s: %s\n", golden.golden.c_str(), render.renderer.c_str(),
                 verdict.summary.c_str());

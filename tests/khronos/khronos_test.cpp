@@ -43,6 +43,7 @@
 #include "gltf/gltf_renderer.h"
 #include "gltf/model.h"
 #include "math/camera.h"
+#include "support/build_paths.h"
 #include "support/gltf_scene.h"
 #include "support/process.h"
 #include "support/test_data.h"
@@ -56,7 +57,8 @@ namespace fs = std::filesystem;
 constexpr float kClearLinear = 0.02f;  // 07's background without IBL (common/gltf/gltf_viewer.cpp)
 
 fs::path viewerPackage() {
-    return fs::path(PBR_NODE_TOOLS_DIR) / "node_modules" / "@khronosgroup" / "gltf-viewer";
+    return fs::path(PBR_PATH(PBR_NODE_TOOLS_DIR)) / "node_modules" / "@khronosgroup" /
+           "gltf-viewer";
 }
 
 // Why the viewer cannot run here, or nullopt.
@@ -413,9 +415,9 @@ void runCases(const std::string& suite, const std::vector<Case>& cases,
     }
     writeTextFile(dir, "job.json", job + "\n]}\n");
 
-    const RunResult viewer =
-        runSample({nodeOnPath()->string(), PBR_KHRONOS_RENDERER, chromiumOnPath()->string(),
-                   viewerPackage().string(), (dir / "job.json").string(), "240"});
+    const RunResult viewer = runSample({nodeOnPath()->string(), PBR_PATH(PBR_KHRONOS_RENDERER),
+                                        chromiumOnPath()->string(), viewerPackage().string(),
+                                        (dir / "job.json").string(), "240"});
     EXPECT_EQ(viewer.exitCode, 0) << viewer.err;
 
     std::printf("%-28s %8s %6s %9s %7s %6s   gate\n", "case", "PSNR dB", "worst", "compared",

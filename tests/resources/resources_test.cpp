@@ -13,6 +13,7 @@
 
 #include "base/paths.h"
 #include "files/image.h"
+#include "support/build_paths.h"
 #include "support/process.h"
 
 namespace pbr::test {
@@ -22,8 +23,8 @@ namespace fs = std::filesystem;
 
 TEST(Resources, BakingAgainGivesTheBuildsBytes) {
     const fs::path dir = testOutputDir("resources_rebake");
-    const RunResult run =
-        runSample({PBR_MATERIAL_BAKER, dir.string(), "--size", "1024", "--set", "rusted_iron"});
+    const RunResult run = runSample(
+        {PBR_PATH(PBR_MATERIAL_BAKER), dir.string(), "--size", "1024", "--set", "rusted_iron"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     for (const char* map : {"albedo", "normal", "metallic", "roughness", "ao"}) {
         const std::string fresh = readBytes(dir / "rusted_iron" / (std::string(map) + ".png"));
@@ -35,8 +36,8 @@ TEST(Resources, BakingAgainGivesTheBuildsBytes) {
 }
 
 TEST(Resources, ContactSheetInTheReadmeIsCurrent) {
-    const std::string committed =
-        readBytes(fs::path(PBR_SOURCE_DIR) / "samples/02_lighting_textured/contact_sheet.png");
+    const std::string committed = readBytes(fs::path(PBR_PATH(PBR_SOURCE_DIR)) /
+                                            "samples/02_lighting_textured/contact_sheet.png");
     const std::string built = readBytes(materialDir() / "contact_sheet.png");
     ASSERT_FALSE(built.empty());
     EXPECT_TRUE(committed == built)
@@ -46,7 +47,7 @@ TEST(Resources, ContactSheetInTheReadmeIsCurrent) {
 
 // The HDR environment has real dynamic range and its sun where the recipe puts it.
 TEST(Resources, EnvironmentHasASunHundredsOfTimesBrighterThanTheRest) {
-    const HdrImage env = readHdr(fs::path(PBR_ENVIRONMENT_DIR) / "sunny_courtyard.hdr");
+    const HdrImage env = readHdr(fs::path(PBR_PATH(PBR_ENVIRONMENT_DIR)) / "sunny_courtyard.hdr");
     ASSERT_EQ(env.width, 2048);
     ASSERT_EQ(env.height, 1024);
     std::vector<float> luminance;
@@ -85,9 +86,9 @@ TEST(Resources, EnvironmentHasASunHundredsOfTimesBrighterThanTheRest) {
 
 TEST(Resources, EnvironmentPictureInTheReadmeIsCurrent) {
     const std::string committed =
-        readBytes(fs::path(PBR_SOURCE_DIR) / "samples/04_ibl_irradiance/environment.png");
+        readBytes(fs::path(PBR_PATH(PBR_SOURCE_DIR)) / "samples/04_ibl_irradiance/environment.png");
     const std::string built =
-        readBytes(fs::path(PBR_ENVIRONMENT_DIR) / "sunny_courtyard_preview.png");
+        readBytes(fs::path(PBR_PATH(PBR_ENVIRONMENT_DIR)) / "sunny_courtyard_preview.png");
     ASSERT_FALSE(built.empty());
     EXPECT_TRUE(committed == built) << "samples/04_ibl_irradiance/environment.png is out of date";
 }
@@ -125,7 +126,7 @@ TEST(Resources, HdrDecoderAgreesWithStbOnValidFiles) {
     }
     writeHdr(dir / "narrow.hdr", narrow);
     writeHdr(dir / "wide.hdr", wide);
-    for (const fs::path& file : {fs::path(PBR_ENVIRONMENT_DIR) / "sunny_courtyard.hdr",
+    for (const fs::path& file : {fs::path(PBR_PATH(PBR_ENVIRONMENT_DIR)) / "sunny_courtyard.hdr",
                                  dir / "narrow.hdr", dir / "wide.hdr"}) {
         const HdrImage ours = readHdr(file);
         int width = 0, height = 0, channels = 0;
@@ -148,7 +149,8 @@ struct ValidatorRun {
     RunResult run;
 };
 ValidatorRun validateGltf(const fs::path& file, const std::vector<std::string>& flags = {}) {
-    const fs::path validator = fs::path(PBR_NODE_TOOLS_DIR) / "node_modules" / "gltf-validator";
+    const fs::path validator =
+        fs::path(PBR_PATH(PBR_NODE_TOOLS_DIR)) / "node_modules" / "gltf-validator";
     std::string nodePath;  // the first node on PATH
     std::istringstream path(std::getenv("PATH") ? std::getenv("PATH") : "");
     for (std::string dir; nodePath.empty() && std::getline(path, dir, ':');) {
@@ -157,12 +159,13 @@ ValidatorRun validateGltf(const fs::path& file, const std::vector<std::string>& 
     }
     if (nodePath.empty()) return {"node is not installed: the glTF validator check is skipped", {}};
     if (!fs::exists(validator)) {
-        return {"gltf-validator is not installed in " + std::string(PBR_NODE_TOOLS_DIR) +
+        return {"gltf-validator is not installed in " + std::string(PBR_PATH(PBR_NODE_TOOLS_DIR)) +
                     " (./build.sh installs it with npm): the check is skipped",
                 {}};
     }
     std::vector<std::string> argv = {
-        nodePath, fs::path(PBR_SOURCE_DIR "/tests/resources/validate_gltf.js").string(),
+        nodePath,
+        (fs::path(PBR_PATH(PBR_SOURCE_DIR)) / "tests/resources/validate_gltf.js").string(),
         validator.string(), file.string()};
     argv.insert(argv.end(), flags.begin(), flags.end());
     return {"", runSample(argv)};
@@ -197,7 +200,8 @@ TEST(Resources, PbrWorkflowsGltfPassesKhronosValidatorWithoutWarnings) {
         if (!v.skipped.empty()) GTEST_SKIP() << v.skipped;
         EXPECT_EQ(v.run.exitCode, 0) << file << v.run.out << v.run.err;
         EXPECT_NE(v.run.out.find("errors 0 "), std::string::npos) << file << v.run.out;
-        EXPECT_NE(v.run.out.find("unexpected warnings 0\n"), std::string::npos) << file << v.run.out;
+        EXPECT_NE(v.run.out.find("unexpected warnings 0\n"), std::string::npos)
+            << file << v.run.out;
         std::printf("gltf-validator %s: %s", file, v.run.out.c_str());
     }
 }

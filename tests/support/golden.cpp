@@ -13,6 +13,7 @@
 
 #include "base/output.h"
 #include "base/paths.h"
+#include "support/build_paths.h"
 
 namespace pbr::test {
 
@@ -91,7 +92,7 @@ ViewRenders renderViews(const std::string& sample, const std::vector<std::string
 }
 
 fs::path goldenReportDir() {
-    return fs::path(PBR_TEST_OUTPUT_DIR) / "golden-report";
+    return fs::path(PBR_PATH(PBR_TEST_OUTPUT_DIR)) / "golden-report";
 }
 fs::path goldenReportPage() {
     return goldenReportDir() / "index.html";
@@ -275,7 +276,7 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
 
 ::testing::AssertionResult matchesGolden(const std::string& name, const SampleRender& render,
                                          const GoldenGate& gate) {
-    const fs::path goldenPath = fs::path(PBR_GOLDEN_DIR) / (name + ".png");
+    const fs::path goldenPath = fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / (name + ".png");
     // `name` may lie in a folder of the goldens ("web/01_lighting"); the pictures kept beside the
     // render go by its last part
     const std::string stem = fs::path(name).filename().string();
@@ -308,8 +309,8 @@ void addReportEntry(const ReportEntry& entry, const fs::path& expected, const fs
         const fs::path previousPath = render.image.parent_path() / (stem + ".old-golden.png");
         writeFileAtomically(previousPath, encodePng(previous));
         copyFile(render.image, goldenPath);
-        writeMetadata(fs::path(PBR_GOLDEN_DIR) / (name + ".json"), name, actual, render.renderer,
-                      gate);
+        writeMetadata(fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / (name + ".json"), name, actual,
+                      render.renderer, gate);
         entry.status = "updated";
         addReportEntry(entry, previousPath, render.image, diffImage);
         std::printf("updated golden %s: look at it before committing\n", goldenPath.c_str());

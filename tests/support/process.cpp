@@ -12,6 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "support/build_paths.h"
+
 namespace pbr::test {
 
 namespace fs = std::filesystem;
@@ -25,11 +27,11 @@ std::vector<std::string> RunResult::errLines() const {
 }
 
 fs::path sampleExecutable(const std::string& name) {
-    return fs::path(PBR_SAMPLE_BIN_DIR) / name;
+    return fs::path(PBR_PATH(PBR_SAMPLE_BIN_DIR)) / name;
 }
 
 fs::path testOutputDir(const std::string& name) {
-    const fs::path dir = fs::path(PBR_TEST_OUTPUT_DIR) / name;
+    const fs::path dir = fs::path(PBR_PATH(PBR_TEST_OUTPUT_DIR)) / name;
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;

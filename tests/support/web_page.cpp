@@ -7,6 +7,8 @@
 #include <string_view>
 #include <utility>
 
+#include "support/build_paths.h"
+
 namespace pbr::test {
 
 namespace fs = std::filesystem;
@@ -56,7 +58,7 @@ std::string percentEncoded(const std::string& text) {
 }  // namespace
 
 fs::path webPage(const std::string& sample) {
-    return fs::path(PBR_WEB_DIR) / (sample + ".html");
+    return fs::path(PBR_PATH(PBR_WEB_DIR)) / (sample + ".html");
 }
 
 std::optional<std::string> webUnavailable(const std::string& sample) {
@@ -80,7 +82,7 @@ PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
     const fs::path files = dir / "page";
     fs::create_directories(files);
     PageRun page;
-    page.browser = runSample({node()->string(), PBR_WEB_RUNNER, chromium()->string(),
+    page.browser = runSample({node()->string(), PBR_PATH(PBR_WEB_RUNNER), chromium()->string(),
                               "file://" + fs::absolute(webPage(sample)).string() + query +
                                   (input.empty() ? "" : "#" + input),
                               files.string(), "240"});

@@ -1,6 +1,8 @@
 // GLSL #include expansion and the mapping of compiler messages back to files: no GL needed.
 #include <gtest/gtest.h>
 
+#include "support/build_paths.h"
+
 #include <fstream>
 
 #include "base/error.h"
@@ -141,8 +143,9 @@ TEST(ShaderEs, VersionLineBecomesEsWithPrecisionAndTheLinesKeepTheirNumbers) {
         toGlslEs("#version 410 core\nx\n", "shaders/a.frag");
         FAIL() << "another version was taken";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("a.frag:1: the first line must be '#version 330 core'"),
-                  std::string::npos)
+        EXPECT_NE(
+            std::string(e.what()).find("a.frag:1: the first line must be '#version 330 core'"),
+            std::string::npos)
             << e.what();
     }
 }
@@ -150,7 +153,7 @@ TEST(ShaderEs, VersionLineBecomesEsWithPrecisionAndTheLinesKeepTheirNumbers) {
 // Every shader of the suite starts the way the rewrite expects.
 TEST(ShaderEs, EveryShaderOfTheSuiteCanBeRewritten) {
     int count = 0;
-    for (const auto& entry : fs::recursive_directory_iterator(PBR_SOURCE_SHADER_DIR)) {
+    for (const auto& entry : fs::recursive_directory_iterator(PBR_PATH(PBR_SOURCE_SHADER_DIR))) {
         const std::string extension = entry.path().extension().string();
         if (extension != ".vert" && extension != ".frag") continue;
         EXPECT_NO_THROW(toGlslEs(readTextFile(entry.path()), entry.path())) << entry.path();

@@ -13,6 +13,7 @@
 #include <regex>
 #include <set>
 
+#include "support/build_paths.h"
 #include "support/golden.h"
 #include "support/golden_cases.h"
 #include "support/web_page.h"
@@ -116,7 +117,7 @@ TEST_P(WebGolden, MatchesGolden) {
                 shown.summary.c_str());
     EXPECT_TRUE(shown.pass) << "the canvas does not show the page's picture: " << shown.summary;
     const GoldenVerdict canvasNative =
-        judge(canvas, readImage(fs::path(PBR_GOLDEN_DIR) / (golden.golden + ".png"), 3),
+        judge(canvas, readImage(fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / (golden.golden + ".png"), 3),
               webToNativeGate(golden.sample));
     std::printf("%s: the canvas against the native golden: %s\n", golden.golden.c_str(),
                 canvasNative.summary.c_str());
@@ -131,7 +132,7 @@ TEST_P(WebGolden, MatchesGolden) {
         << "the page printed:\n"
         << render.page.log;
     const GoldenVerdict native =
-        judge(image, readImage(fs::path(PBR_GOLDEN_DIR) / (golden.golden + ".png"), 3),
+        judge(image, readImage(fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / (golden.golden + ".png"), 3),
               webToNativeGate(golden.sample));
     std::printf("%s against the native golden: %s\n", golden.golden.c_str(),
                 native.summary.c_str());
@@ -143,7 +144,8 @@ INSTANTIATE_TEST_SUITE_P(Pages, WebGolden, ::testing::ValuesIn(webGoldenCases())
 
 // Every web golden has its case, and the other way round.
 TEST(Web, EveryWebGoldenFileHasACase) {
-    const GoldenFolder folder = goldenFolder(fs::path(PBR_GOLDEN_DIR) / "web", webGoldenCases());
+    const GoldenFolder folder =
+        goldenFolder(fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / "web", webGoldenCases());
     EXPECT_EQ(folder.pictures, folder.cases);
     EXPECT_EQ(folder.metadata, folder.cases);
 }
@@ -152,7 +154,7 @@ TEST(Web, EveryWebGoldenFileHasACase) {
 // native ones: the change alone, without the page's own small differences, which could only add
 // to what the gate sees (and a page run costs ten native ones).
 TEST(Web, NativeGateRejectsSmallChanges) {
-    const Image golden = readImage(fs::path(PBR_GOLDEN_DIR) / "01_lighting.png", 3);
+    const Image golden = readImage(fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / "01_lighting.png", 3);
     for (const auto& [name, args] :
          {std::pair{"rougher", std::vector<std::string>{"--roughness-offset", "0.05"}},
           {"three_lights", {"--lights", "3"}}}) {
@@ -168,7 +170,8 @@ TEST(Web, NativeGateRejectsSmallChanges) {
 // The glTF scene's looser gate still sees a small real change: 07 a tenth brighter (natively, as
 // above).
 TEST(Web, GltfGateRejectsSmallChanges) {
-    const Image golden = readImage(fs::path(PBR_GOLDEN_DIR) / "07_gltf_metallic_roughness.png", 3);
+    const Image golden =
+        readImage(fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / "07_gltf_metallic_roughness.png", 3);
     const fs::path dir = testOutputDir("web_gate_gltf_exposure");
     const SampleRender render =
         renderSample("07_gltf_metallic_roughness", dir / "changed.png", {"--exposure", "1.1"});
@@ -196,7 +199,7 @@ TEST_P(WebTermView, MatchesTheNativeGolden) {
     if (!fs::exists(render.image)) return;
     const GoldenVerdict native =
         judge(readImage(render.image, 3),
-              readImage(fs::path(PBR_GOLDEN_DIR) / (golden->golden + ".png"), 3),
+              readImage(fs::path(PBR_PATH(PBR_GOLDEN_DIR)) / (golden->golden + ".png"), 3),
               webToNativeGate(golden->sample));
     std::printf("%s in the page against the native golden: %s\n", golden->golden.c_str(),
                 native.summary.c_str());
@@ -441,7 +444,7 @@ INSTANTIATE_TEST_SUITE_P(Pages, WebControls,
 // teaches (its README's summary: the first paragraph, with the formula or list it introduces).
 TEST(Web, GalleryLinksEveryPage) {
     PBR_NEED_WEB("01_lighting");
-    std::ifstream in(fs::path(PBR_WEB_DIR) / "index.html");
+    std::ifstream in(fs::path(PBR_PATH(PBR_WEB_DIR)) / "index.html");
     ASSERT_TRUE(in) << "no build/web/index.html";
     const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::set<std::string> samples;
@@ -455,7 +458,7 @@ TEST(Web, GalleryLinksEveryPage) {
     int images = 0;
     for (auto it = std::sregex_iterator(page.begin(), page.end(), image);
          it != std::sregex_iterator(); ++it, ++images) {
-        EXPECT_TRUE(fs::exists(fs::path(PBR_WEB_DIR) / (*it)[1].str())) << (*it)[1].str();
+        EXPECT_TRUE(fs::exists(fs::path(PBR_PATH(PBR_WEB_DIR)) / (*it)[1].str())) << (*it)[1].str();
     }
     EXPECT_EQ(images, int(samples.size()));
 }
@@ -482,7 +485,7 @@ TEST(Web, EveryPageWeighsAtMost32MBAndCarriesNothingTwice) {
         for (auto it = std::sregex_iterator(page.begin(), page.end(), bundle);
              it != std::sregex_iterator(); ++it) {
             const std::string file = (*it)[1].matched ? (*it)[1].str() : (*it)[3].str();
-            parts.push_back(text(fs::path(PBR_WEB_DIR) / file));
+            parts.push_back(text(fs::path(PBR_PATH(PBR_WEB_DIR)) / file));
             ASSERT_FALSE(parts.back().empty()) << sample << ": " << file;
             bytes += double(parts.back().size());
             bundles += " + " + file + ((*it)[2].length() ? " (with " + (*it)[2].str() + ")" : "");
