@@ -105,6 +105,8 @@ PageRun runPage(const std::string& sample, const std::vector<std::string>& args,
             page.caption = readBytes(entry.path());
         } else if (name == "scale.txt") {
             page.scale = readBytes(entry.path());
+        } else if (name == "labels.txt") {
+            page.labelsShown = std::atoi(readBytes(entry.path()).c_str());
         } else if (name == "exit.txt") {
             page.exitCode = std::atoi(readBytes(entry.path()).c_str());
         } else if (entry.is_regular_file() && name.front() != '.') {

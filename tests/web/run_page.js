@@ -4,7 +4,8 @@
 // string at the end (address.txt: the page's controls keep it current), every text its
 // header showed, one a line (said.txt), its line on the mouse and keys (hint.txt), the bar's
 // command line and frame time under a shown picture (command.txt, frame.txt), a view's caption
-// (caption.txt) and its scale bar's ticks ("at value;...", scale.txt), and, when the address
+// (caption.txt) and its scale bar's ticks ("at value;...", scale.txt), how many labels over the
+// picture are still shown (labels.txt), and, when the address
 // asks for one with shot=N after '#' (web/shell.html), the canvas as the browser showed frame N for a person to see, cut from a
 // screenshot of the page (canvas-screenshot.png): not the program's own read-back, so what WebGL
 // does to a picture on its way to the screen is in it. The browser is driven over the DevTools protocol on a
@@ -44,6 +45,8 @@ const collect = `(function () {
                          command: (document.getElementById("pbr-command") || {}).textContent || "",
                          frame: (document.getElementById("pbr-frame") || {}).textContent || "",
                          caption: (document.getElementById("pbr-caption-text") || {}).textContent || "",
+                         labels: Array.from(document.querySelectorAll("#pbr-labels > div"))
+                             .filter(function (e) { return e.offsetParent !== null; }).length,
                          scale: Array.from(document.querySelectorAll("#pbr-caption-scale span"))
                              .map(function (e) { return e.getAttribute("data-at") + " " + e.textContent; })
                              .join(";") });
@@ -95,6 +98,7 @@ function finish(code, why) {
       writeWhole(path.join(dir, "frame.txt"), page.frame);
       writeWhole(path.join(dir, "caption.txt"), page.caption);
       writeWhole(path.join(dir, "scale.txt"), page.scale);
+      writeWhole(path.join(dir, "labels.txt"), String(page.labels));
       clearTimeout(timer);
       finish(0);
     }

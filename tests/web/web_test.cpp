@@ -424,6 +424,9 @@ TEST_P(WebControls, ChangeThePageLive) {
         << " " << control.value;
     EXPECT_FALSE(changed.files.at("last.png") == untouched.files.at("last.png"))
         << "the control's change did not show";
+    // the run over, its picture is gone from the page (the canvas back to 1x1), and so are the
+    // labels that were over it (once left where the picture had been, over the controls)
+    EXPECT_EQ(changed.labelsShown, 0);
     std::printf("the address after the change: %s\n", changed.address.c_str());
     EXPECT_NE(changed.address.find(control.flag + "=" + control.value), std::string::npos)
         << changed.address;
