@@ -25,7 +25,7 @@ struct PageRun {
     std::string frame;              // the bar's frame time ("143 ms a frame")
     std::string caption;            // a view's caption over a shown picture
     std::string scale;              // its scale bar's ticks: "at value" pairs, ';' between them
-    int labelsShown = 0;  // labels over the picture (App::label) still shown at the end
+    int labelsShown = 0;            // labels over the picture (App::label) still shown at the end
 };
 
 // Why the web tests cannot run on this machine (no browser, no web build), or nullopt.
