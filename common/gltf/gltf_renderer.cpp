@@ -305,8 +305,10 @@ void GltfRenderer::drawPrimitive(Shader& program, const GpuModel::Primitive& pri
 
 void GltfRenderer::drawWithMaterial(const GpuModel& model, const GpuModel::Primitive& primitive,
                                     const glm::mat4& world, const SetFrame& setFrame) {
-    const Material material =
-        extensions_ ? withLayerFactors(primitive.material, layerFactors_) : primitive.material;
+    // (a copy only where the factors may change it: the core material is drawn as it is)
+    std::optional<Material> applied;
+    if (extensions_) applied = withLayerFactors(primitive.material, layerFactors_);
+    const Material& material = applied ? *applied : primitive.material;
     const std::vector<std::string> layers =
         extensions_ ? materialLayers(material) : std::vector<std::string>();
     Shader& program = programFor(material, layers, setFrame);
