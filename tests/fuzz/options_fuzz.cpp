@@ -28,6 +28,11 @@ const std::vector<FlagSpec>& sampleFlags() {
                            : "";
             }),
         FlagSpec::choice("--filter", {"trilinear", "nearest"}, "how textures are sampled"),
+        // without a default (10's layer factors: each material's own unless given)
+        FlagSpec::number("--clearcoat", "F", "the clear coat's factor", 0.0, 1.0, 0.0)
+            .withoutDefault()
+            .asLive(),
+        FlagSpec::numbers("--sheen-color", "R,G,B", "the sheen's colour", 3, 0.0, 1.0).asLive(),
     };
     return flags;
 }
