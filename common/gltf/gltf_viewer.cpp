@@ -155,10 +155,10 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
     const std::span<const PunctualLight> lights =
         model.lights.empty() ? std::span<const PunctualLight>(fallback) : model.lights;
 
-    // 05's maps, from the same cache: irradiance 32^2, prefiltered 128^2 with 5 mips, the BRDF
-    // LUT 512^2, on units 5-7. Made (or read) before the first frame that has the image-based
-    // light, that is before the first frame unless --no-ibl; the environment keeps a reference
-    // to the cache, so both live as long.
+    // 05's maps, from the same cache: irradiance 32^2, prefiltered 128^2 with 5 mips, and the
+    // glTF BRDF's LUT 512^2 (not 05's: see BrdfLutChannels::GltfScaleBias), on units 5-7. Made (or
+    // read) before the first frame that has the image-based light, that is before the first frame
+    // unless --no-ibl; the environment keeps a reference to the cache, so both live as long.
     std::optional<IblCache> cache;
     std::optional<SplitSumMaps> maps;
     Skybox skybox;
@@ -240,7 +240,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
         }
         if (ibl && (!maps || app.shadersReloaded())) {
             if (!cache) cache.emplace(cacheDir(app.options()));
-            maps.emplace(*cache, environmentFile(app.options()));
+            maps.emplace(*cache, environmentFile(app.options()), BrdfLutChannels::GltfScaleBias);
             if (sheen) sheenMap = maps->environment.sheenMap();
             app.addPrecomputeSeconds(cache->computeSeconds());
             app.bindRenderTarget();  // the frame's, after the precomputation's own

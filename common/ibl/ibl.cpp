@@ -278,6 +278,7 @@ Texture2D computeBrdfLut(int size, int samples, BrdfLutChannels channels) {
     Shader shader("ibl/fullscreen.vert", "ibl/brdf_lut.frag");
     shader.set("sampleCount", samples);
     shader.set("sheen", sheen ? 1 : 0);
+    shader.set("heightCorrelated", channels == BrdfLutChannels::GltfScaleBias ? 1 : 0);
     const GpuMesh quad(pbr::quad());
     quad.draw();
     return lut;

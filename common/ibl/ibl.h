@@ -87,10 +87,16 @@ double sheenPrefilterNormalization(double sheenRoughness);
 
 // The BRDF lookup table, `size`^2: x = NdotV, y = roughness, both sampled at texel centres
 // ((i + 0.5) / size), row 0 at t = 0 (roughness near 0); `samples` Hammersley points.
-// ScaleBias: RG16F, R = scale and G = bias to F0 of the split-sum GGX integral.
+// ScaleBias: RG16F, R = scale and G = bias to F0 of the split-sum GGX integral, with the texts'
+// masking-shadowing (Schlick-GGX, k = roughness^2 / 2: LearnOpenGL's and the cookbook's LUT).
 // ScaleBiasSheen: RGBA16F, and B = the cookbook's Charlie sheen integral (Ashikhmin's
 // visibility), A = the same with the sheen specification's Charlie visibility (V_Sheen).
-enum class BrdfLutChannels { ScaleBias, ScaleBiasSheen };
+// GltfScaleBias: RG16F, the scale and bias of the glTF BRDF itself, with its height-correlated
+// Smith visibility (V_GGX, brdf.glsl), the one its direct light has: the directional albedo of
+// the lobe the glTF samples light (07, 08, 10). The texts' table gives a white lobe less: up to
+// 0.02 of its albedo seen head-on, 0.11 at NdotV 0.5 and 0.18 at NdotV 0.2 (roughness 0.5; by
+// cpu::splitSumQuadrature and cpu::gltfSplitSumQuadrature).
+enum class BrdfLutChannels { ScaleBias, ScaleBiasSheen, GltfScaleBias };
 Texture2D computeBrdfLut(int size, int samples = 1024,
                          BrdfLutChannels channels = BrdfLutChannels::ScaleBias);
 

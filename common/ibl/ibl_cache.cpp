@@ -344,9 +344,12 @@ KtxFormat brdfLutFormat(BrdfLutChannels channels) {
 }
 
 MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels) {
-    const bool sheen = channels == BrdfLutChannels::ScaleBiasSheen;
-    const std::string name =
-        std::string(sheen ? "brdf_lut_sheen_" : "brdf_lut_") + std::to_string(size);
+    const bool sheen = channels == BrdfLutChannels::ScaleBiasSheen,
+               gltf = channels == BrdfLutChannels::GltfScaleBias;
+    const std::string name = std::string(sheen  ? "brdf_lut_sheen_"
+                                         : gltf ? "brdf_lut_gltf_"
+                                                : "brdf_lut_") +
+                             std::to_string(size);
     const std::string key = std::string(kCodeVersion) + "; " + name + " samples " +
                             std::to_string(samples) + "; shaders " +
                             shaderCodeHash("ibl/fullscreen.vert", "ibl/brdf_lut.frag");
@@ -354,6 +357,8 @@ MapFile brdfLutFile(int size, int samples, BrdfLutChannels channels) {
             "BRDF LUT " + std::to_string(size) + "^2, " + std::to_string(samples) +
                 " samples; x = NdotV, y = roughness at texel centres; R = GGX scale, G = GGX "
                 "bias to F0" +
+                (gltf ? " (height-correlated Smith visibility, glTF's V_GGX)"
+                      : " (Schlick-GGX, k = roughness^2 / 2)") +
                 (sheen ? ", B = Charlie sheen (Ashikhmin visibility), A = Charlie sheen (Charlie "
                          "visibility)"
                        : ""),
@@ -365,12 +370,12 @@ Texture2D brdfLut(IblCache& cache, int size, int samples, BrdfLutChannels channe
                          [&] { return computeBrdfLut(size, samples, channels); });
 }
 
-SplitSumMaps::SplitSumMaps(IblCache& cache, const fs::path& hdr)
+SplitSumMaps::SplitSumMaps(IblCache& cache, const fs::path& hdr, BrdfLutChannels lut)
     : environment(cache, hdr),
       // the environment first (the sky draws it, and a frame should not make it)
       irradiance((environment.environmentMap(), environment.irradianceMap(32))),
       prefiltered(environment.prefilteredMap(128, 5, kPrefilterSamples)),
-      brdfLut(pbr::brdfLut(cache, 512, 1024, BrdfLutChannels::ScaleBias)) {}
+      brdfLut(pbr::brdfLut(cache, 512, 1024, lut)) {}
 
 void SplitSumMaps::use(Shader& shader, int firstUnit) {
     useIblMaps(shader, environment.environmentMap(), irradiance, prefiltered, brdfLut, firstUnit);

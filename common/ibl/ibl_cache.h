@@ -107,9 +107,11 @@ private:
 // The split sum's maps as 05, 07 and 08 use them (LearnOpenGL's sizes), through the cache: the
 // environment cube, its irradiance (32^2), the prefiltered map (128^2, 5 levels, roughness
 // level / 4, kPrefilterSamples a texel) and the BRDF LUT (512^2 from 1024 samples, scale and
-// bias). Made again (emplace) after a shader reload: the cache's keys hold the shaders' code.
+// bias: `lut` ScaleBias, the texts' table, for 05; GltfScaleBias, the glTF BRDF's, for 07, 08
+// and 10). Made again (emplace) after a shader reload: the cache's keys hold the shaders' code.
 struct SplitSumMaps {  // irradiance 32, prefiltered 128 x 5 levels, LUT 512 from 1024 samples
-    SplitSumMaps(IblCache& cache, const std::filesystem::path& hdr);
+    SplitSumMaps(IblCache& cache, const std::filesystem::path& hdr,
+                 BrdfLutChannels lut = BrdfLutChannels::ScaleBias);
     IblEnvironment environment;
     TextureCube irradiance, prefiltered;
     Texture2D brdfLut;

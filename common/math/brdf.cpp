@@ -337,14 +337,20 @@ double ashikhmin(double NdotL, double NdotV) {
 }
 
 // What the LUT integrates for one light direction, per unit solid angle of l: (scale, bias,
-// sheen). Zero below the horizon.
-glm::dvec3 lutIntegrand(const glm::dvec3& V, const glm::dvec3& L, double roughness) {
+// sheen), the lobe's masking-shadowing the texts' Schlick-GGX or (`heightCorrelated`) glTF's
+// V_GGX. Zero below the horizon.
+glm::dvec3 lutIntegrand(const glm::dvec3& V, const glm::dvec3& L, double roughness,
+                        bool heightCorrelated = false) {
     const double NdotL = L.z, NdotV = V.z;
     if (NdotL <= 0.0) return glm::dvec3(0.0);
     const glm::dvec3 H = glm::normalize(V + L);
     const double VdotH = std::max(glm::dot(V, H), 0.0), alpha = roughness * roughness;
-    const double specular = ggxDistribution(H.z, alpha) * smithSchlickIbl(NdotV, NdotL, roughness) /
-                            (4.0 * NdotV);  // D G / (4 NdotL NdotV) times NdotL
+    // D G / (4 NdotL NdotV) times NdotL, or D Vis NdotL
+    const double specular =
+        heightCorrelated
+            ? ggxDistribution(H.z, alpha) * V_GGX(float(NdotL), float(NdotV), float(alpha)) * NdotL
+            : ggxDistribution(H.z, alpha) * smithSchlickIbl(NdotV, NdotL, roughness) /
+                  (4.0 * NdotV);
     const double Fc = std::pow(1.0 - VdotH, 5.0);
     const double sheen = charlieDistribution(H.z, alpha) * ashikhmin(NdotL, NdotV) * NdotL;
     return {specular * (1.0 - Fc), specular * Fc, sheen};
@@ -391,10 +397,12 @@ T halfVectorQuadrature(double NdotV, double alpha, const Integrand& integrand) {
     return sum;
 }
 
-glm::dvec3 halfVectorQuadrature(double NdotV, double roughness) {
+glm::dvec3 halfVectorQuadrature(double NdotV, double roughness, bool heightCorrelated = false) {
     return halfVectorQuadrature<glm::dvec3>(
         NdotV, roughness * roughness,
-        [roughness](const glm::dvec3& V, const glm::dvec3& L) { return lutIntegrand(V, L, roughness); });
+        [roughness, heightCorrelated](const glm::dvec3& V, const glm::dvec3& L) {
+            return lutIntegrand(V, L, roughness, heightCorrelated);
+        });
 }
 
 }  // namespace
@@ -406,6 +414,10 @@ double integrateOverLights(double NdotV, double alpha,
 
 glm::dvec2 splitSumQuadrature(double NdotV, double roughness) {
     return glm::dvec2(halfVectorQuadrature(NdotV, roughness));
+}
+
+glm::dvec2 gltfSplitSumQuadrature(double NdotV, double roughness) {
+    return glm::dvec2(halfVectorQuadrature(NdotV, roughness, true));
 }
 
 double sheenQuadrature(double NdotV, double roughness) {

@@ -99,6 +99,9 @@ SplitSumAmbient splitSumAmbient(float NdotV, const glm::vec3& albedo, float meta
 //   x = integral of D G (1 - Fc) / (4 NdotL NdotV) NdotL dl,   y = the same with Fc,
 // Fc = (1 - VdotH)^5, D = GGX with alpha = roughness^2, G = Smith-Schlick with k = roughness^2 / 2.
 glm::dvec2 splitSumQuadrature(double NdotV, double roughness);
+// The same for the glTF BRDF (what BrdfLutChannels::GltfScaleBias holds): G / (4 NdotL NdotV)
+// replaced by its height-correlated Smith visibility V_GGX, the one its direct light has.
+glm::dvec2 gltfSplitSumQuadrature(double NdotV, double roughness);
 // The directional albedo of Charlie sheen (Estevez and Kulla; Ashikhmin's visibility), what the
 // LUT's B channel holds: integral of D_Charlie(alpha = roughness^2) V_Ashikhmin NdotL dl.
 double sheenQuadrature(double NdotV, double roughness);

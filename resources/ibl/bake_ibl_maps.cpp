@@ -1,8 +1,9 @@
 // bake_ibl_maps DIR: the IBL maps that depend on no user input, made once by the build instead of
 // at every start, with the cache's metadata under their renderer-free keys (MapFile::bakedKey),
 // so that IblCache finds them in iblDir():
-// - brdf_lut_512.ktx (05, 07, 08: LearnOpenGL's 512^2 RG16F) and brdf_lut_sheen_256.ktx (06: the
-//   cookbook's 256^2 with sheen), read by every build;
+// - brdf_lut_512.ktx (05: LearnOpenGL's 512^2 RG16F), brdf_lut_sheen_256.ktx (06: the
+//   cookbook's 256^2 with sheen; 10 reads its sheen) and brdf_lut_gltf_512.ktx (07, 08, 10: the
+//   glTF BRDF's, 512^2 RG16F), read by every build;
 // - the project's environment's cube (512^2, every mip), irradiance (32^2) and prefiltered
 //   (128^2, 5 levels) maps, which only the pages read (a page has no cache; natively the cache
 //   keeps what a first run made).
@@ -36,8 +37,9 @@ int main(int argc, char** argv) try {
     std::vector<char*> argp;
     for (std::string& arg : args) argp.push_back(arg.data());
     pbr::App app(int(argp.size()), argp.data(), {.name = "bake_ibl_maps"});
-    for (const auto& [size, channels] :
-         {std::pair{512, pbr::BrdfLutChannels::ScaleBias}, {256, pbr::BrdfLutChannels::ScaleBiasSheen}}) {
+    for (const auto& [size, channels] : {std::pair{512, pbr::BrdfLutChannels::ScaleBias},
+                                         {256, pbr::BrdfLutChannels::ScaleBiasSheen},
+                                         {512, pbr::BrdfLutChannels::GltfScaleBias}}) {
         write(dir, pbr::brdfLutFile(size, 1024, channels),
               pbr::computeBrdfLut(size, 1024, channels).toKtx(pbr::brdfLutFormat(channels)));
     }

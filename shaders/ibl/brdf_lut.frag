@@ -15,6 +15,11 @@ in vec2 TexCoords;
 
 uniform int sampleCount;
 uniform bool sheen;
+// The masking-shadowing term of R and G: false, the texts' Schlick-GGX with k = roughness^2 / 2
+// (LearnOpenGL's and the cookbook's table, 04-06); true, the glTF BRDF's own height-correlated
+// Smith visibility V_GGX (brdf.glsl), so that the table holds the directional albedo of the lobe
+// that 07, 08 and 10 light with.
+uniform bool heightCorrelated;
 
 #include "importance_sampling.glsl"
 #include "sheen.glsl"
@@ -40,8 +45,12 @@ vec2 integrateBRDF(float NdotV, float roughness)
         float NdotH = max(H.z, 0.0);
         if (NdotL > 0.0)
         {
-            float G = geometrySmithIbl(NdotV, NdotL, roughness);
-            float G_Vis = (G * VdotH) / (NdotH * NdotV);
+            // D divides out of D G / (4 NdotL NdotV) NdotL over the density of L,
+            // D NdotH / (4 VdotH): G VdotH / (NdotH NdotV), or with the visibility
+            // Vis = G / (4 NdotL NdotV), 4 Vis NdotL VdotH / NdotH
+            float G_Vis = heightCorrelated
+                              ? 4.0 * V_GGX(NdotL, NdotV, roughness * roughness) * NdotL * VdotH / NdotH
+                              : geometrySmithIbl(NdotV, NdotL, roughness) * VdotH / (NdotH * NdotV);
             float c = 1.0 - VdotH;
             float Fc = c * c * c * c * c;  // (1 - VdotH)^5
             A += (1.0 - Fc) * G_Vis;

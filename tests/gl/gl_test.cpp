@@ -295,10 +295,32 @@ TEST(Gl, BrdfLutMatchesACpuIntegration) {
                 << roughness;
         }
     }
+    // The glTF samples' table (07, 08, 10): the same two channels with glTF's V_GGX.
+    const Texture2D gltfLut = computeBrdfLut(kSize, 1024, BrdfLutChannels::GltfScaleBias);
+    const std::vector<float> gltfTexels = gltfLut.readFloats(2);
+    double worstGltf = 0.0, largestGap = 0.0;
+    for (int y = 3; y < kSize; y += 8) {
+        for (int x = 3; x < kSize; x += 8) {
+            const double NdotV = (x + 0.5) / kSize, roughness = (y + 0.5) / kSize;
+            const glm::dvec2 cpu = cpu::gltfSplitSumQuadrature(NdotV, roughness);
+            const size_t i = (size_t(y) * kSize + size_t(x)) * 2;
+            worstGltf = std::max(
+                {worstGltf, std::abs(gltfTexels[i] - cpu.x), std::abs(gltfTexels[i + 1] - cpu.y)});
+            // the two tables differ where it matters (else the check above proves nothing new)
+            const glm::dvec2 texts = cpu::splitSumQuadrature(NdotV, roughness);
+            largestGap = std::max(largestGap, (cpu.x + cpu.y) - (texts.x + texts.y));
+            EXPECT_NEAR(gltfTexels[i], cpu.x, 0.01)
+                << "glTF scale at NdotV " << NdotV << ", roughness " << roughness;
+            EXPECT_NEAR(gltfTexels[i + 1], cpu.y, 0.01)
+                << "glTF bias at NdotV " << NdotV << ", roughness " << roughness;
+        }
+    }
+    EXPECT_GT(largestGap, 0.1);
     std::printf(
         "BRDF LUT: worst difference from the CPU quadrature %.5f (R, G), "
-        "%.5f (B, largest value %.4f), %.5f (A, largest value %.4f)\n",
-        worst, worstSheen, largestSheen, worstAlbedo, largestAlbedo);
+        "%.5f (B, largest value %.4f), %.5f (A, largest value %.4f); glTF's %.5f (its white "
+        "lobe's albedo up to %.4f above the texts')\n",
+        worst, worstSheen, largestSheen, worstAlbedo, largestAlbedo, worstGltf, largestGap);
     EXPECT_GT(largestSheen, 0.3);  // the comparisons above are not between two zeros
     EXPECT_GT(largestAlbedo, 0.3);
     // smooth and head-on: almost all of F0 comes back (scale near 1, bias near 0)
@@ -315,7 +337,8 @@ TEST(Gl, BakedBrdfLutsAreWhatTheCodeMakes) {
     const fs::path dir = test::testOutputDir("gl_baked_lut");
     App app = makeApp(dir);
     for (const auto& [size, channels] : {std::pair{512, BrdfLutChannels::ScaleBias},
-                                         std::pair{256, BrdfLutChannels::ScaleBiasSheen}}) {
+                                         std::pair{256, BrdfLutChannels::ScaleBiasSheen},
+                                         std::pair{512, BrdfLutChannels::GltfScaleBias}}) {
         const MapFile file = brdfLutFile(size, 1024, channels);
         const KtxImage baked = readKtx(iblDir() / file.name);
         const KtxImage made =

@@ -783,14 +783,14 @@ TEST(Reference, Gltf07OneLightAlone) {
 }
 
 // 07's image-based light's views on the showcase's spheres in the linear sky (tests/reference/
-// linear_sky.h: the irradiance, the prefiltered levels and the LUT in closed form), punctual
-// lights off, no tone mapping: the reads as x / (1 + x) (the LUT's scale and bias as they are),
-// the parts of cpu::gltfAmbient (multiple scattering on) as x / (1 + x), the ambient light alone
-// and the picture itself clamped to [0, 1].
+// linear_sky.h: the irradiance and the prefiltered levels in closed form, the glTF BRDF's LUT by
+// quadrature), punctual lights off, no tone mapping: the reads as x / (1 + x) (the LUT's scale
+// and bias as they are), the parts of cpu::gltfAmbient (multiple scattering on) as x / (1 + x),
+// the ambient light alone and the picture itself clamped to [0, 1].
 TEST(Reference, Gltf07IblTermViewsMatchTheCpu) {
     const fs::path dir = testOutputDir("reference_07_ibl_views");
     const std::string hdr = writeLinearSky(dir).string();
-    const LinearSkyReads skyReads;
+    const LinearSkyReads skyReads(true);
     auto compress = [](const glm::dvec3& x) { return x / (1.0 + x); };
     const std::vector<std::string> views = {"irradiance",      "prefiltered",        "lut",
                                             "ambient-diffuse", "ambient-specular",   "ambient",

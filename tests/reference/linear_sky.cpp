@@ -60,17 +60,18 @@ double lobeMean(double roughness) {
 }
 
 namespace {
-// cpu::splitSumQuadrature at NdotV = 24/64, 25/64, ... 1 for each roughness asked for, linearly
-// interpolated (the quadrature is smooth there: the interpolation errs by under 0.001) and
-// computed once, when first asked for: each point takes milliseconds.
-glm::dvec2 lut(double NdotV, double roughness) {
-    static std::map<double, std::vector<glm::dvec2>> rows;
+// cpu::splitSumQuadrature (or `gltf`, cpu::gltfSplitSumQuadrature) at NdotV = 24/64, 25/64, ...
+// 1 for each roughness asked for, linearly interpolated (the quadrature is smooth there: the
+// interpolation errs by under 0.001) and computed once, when first asked for: each point takes
+// milliseconds.
+glm::dvec2 lut(double NdotV, double roughness, bool gltf) {
+    static std::map<std::pair<bool, double>, std::vector<glm::dvec2>> rows;
+    const auto quadrature = gltf ? cpu::gltfSplitSumQuadrature : cpu::splitSumQuadrature;
     constexpr int kFirst = 24, kLast = 64;
-    if (NdotV < kFirst / 64.0) return cpu::splitSumQuadrature(NdotV, roughness);
-    std::vector<glm::dvec2>& row = rows[roughness];
+    if (NdotV < kFirst / 64.0) return quadrature(NdotV, roughness);
+    std::vector<glm::dvec2>& row = rows[{gltf, roughness}];
     if (row.empty()) {
-        for (int i = kFirst; i <= kLast; ++i)
-            row.push_back(cpu::splitSumQuadrature(i / 64.0, roughness));
+        for (int i = kFirst; i <= kLast; ++i) row.push_back(quadrature(i / 64.0, roughness));
     }
     const double x = NdotV * 64.0 - kFirst;
     const int i = std::min(int(x), kLast - kFirst - 1);
@@ -78,7 +79,7 @@ glm::dvec2 lut(double NdotV, double roughness) {
 }
 }  // namespace
 
-LinearSkyReads::LinearSkyReads() {
+LinearSkyReads::LinearSkyReads(bool gltf) : gltf_(gltf) {
     for (int level = 1; level <= 4; ++level) levelMean_[size_t(level)] = lobeMean(level / 4.0);
 }
 
@@ -95,7 +96,8 @@ SkyReads LinearSkyReads::at(const glm::dvec3& N, const glm::dvec3& V, double rou
         kSkyMean + skySlope(R) * glm::mix(levelMean_[size_t(below)],
                                           levelMean_[size_t(below + 1)], lod - below);
     // the LUT's rows hold roughness (j + 0.5) / 512: a roughness of 0 reads the first
-    if (withLut) reads.lut = lut(std::max(glm::dot(N, V), 0.0), std::max(roughness, 0.5 / 512.0));
+    if (withLut)
+        reads.lut = lut(std::max(glm::dot(N, V), 0.0), std::max(roughness, 0.5 / 512.0), gltf_);
     return reads;
 }
 

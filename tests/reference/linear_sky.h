@@ -34,13 +34,16 @@ struct SkyReads {
 
 class LinearSkyReads {
 public:
-    LinearSkyReads();
+    // `gltf`: the LUT is the glTF BRDF's (cpu::gltfSplitSumQuadrature, 07 and 08's table), else
+    // the texts' (cpu::splitSumQuadrature, 05's).
+    explicit LinearSkyReads(bool gltf = false);
     // The reads at a point of normal N seen from V, of roughness `roughness` (one of a few: its
     // LUT row is kept in a table of NdotV); the LUT is read only `withLut`.
     SkyReads at(const glm::dvec3& N, const glm::dvec3& V, double roughness, bool withLut) const;
 
 private:
     std::array<double, 5> levelMean_{1.0, 0.0, 0.0, 0.0, 0.0};  // level 0: the mirror
+    bool gltf_ = false;
 };
 
 }  // namespace pbr::test
