@@ -54,9 +54,9 @@ std::string jsonEscape(const std::string& text) {
 // PBR_PANEL_SCRIPT (see panel_script.h): the tests drive the panel headless with it.
 std::vector<ScriptFrame> readPanelScript(const fs::path& path) {
     std::ifstream in(path);
-    if (!in) throw Error(path.string() + ": cannot read the panel script (PBR_PANEL_SCRIPT)");
+    if (!in) throw Error(utf8Path(path) + ": cannot read the panel script (PBR_PANEL_SCRIPT)");
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    return parsePanelScript(text, path.string());
+    return parsePanelScript(text, utf8Path(path));
 }
 
 #ifdef PBR_WEBGL
@@ -88,7 +88,7 @@ std::string flagsJson(const std::vector<FlagSpec>& flags, const Options& options
 
 App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     if (config_.title.empty()) config_.title = config_.name;
-    program_ = argc > 0 ? fs::path(argv[0]).filename().string() : config_.name;
+    program_ = argc > 0 ? utf8Path(pathFromUtf8(argv[0]).filename()) : config_.name;
     usage_ = usageText(program_, config_.flags, config_.orbitCamera);
     std::vector<std::string> args(argv + std::min(argc, 1), argv + argc);
     try {
@@ -108,11 +108,11 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     }
     // Where files will go, checked before any window opens or anything is computed: a picture
     // that cannot be written should not cost a render first.
-    if (!options_.output.empty()) requireWritableFilePath(options_.output, options_.output);
+    if (!options_.output.empty()) requireWritableFilePath(outputPath(), options_.output);
     for (const FlagSpec& spec : config_.flags) {
         const auto value = flag(spec.name);
         if (spec.kind == FlagSpec::Kind::OutputFolder && value) {
-            requireOutputFolder(*value, spec.name + " " + *value);
+            requireOutputFolder(pathFromUtf8(*value), spec.name + " " + *value);
         }
     }
 
@@ -180,7 +180,7 @@ App::App(int argc, char** argv, AppConfig config) : config_(std::move(config)) {
     scripted_ = script && *script;
     if (scripted_) {
         scriptPath_ = script;
-        script_ = readPanelScript(scriptPath_);
+        script_ = readPanelScript(pathFromUtf8(scriptPath_));
     }
     if (Panel::available() &&
         (context_->windowed() || options_.panel || options_.caption || scripted_)) {
@@ -251,6 +251,16 @@ std::optional<std::string> App::flag(const std::string& name) const {
     auto found = options_.sampleFlags.find(name);
     if (found == options_.sampleFlags.end()) return std::nullopt;
     return found->second;
+}
+
+std::optional<fs::path> App::flagPath(const std::string& name) const {
+    const std::optional<std::string> text = flag(name);
+    if (!text) return std::nullopt;
+    return pathFromUtf8(*text);
+}
+
+fs::path App::outputPath() const {
+    return pathFromUtf8(options_.output);
 }
 
 const FlagSpec& App::sampleFlag(const std::string& name) const {
@@ -754,7 +764,7 @@ namespace {
 std::string absoluteForMessage(const fs::path& path) {
     std::error_code ec;
     const fs::path absolute = fs::absolute(path, ec);
-    return (ec ? path : absolute).string();
+    return utf8Path(ec ? path : absolute);
 }
 }  // namespace
 
@@ -784,7 +794,7 @@ void App::finish() {
     if (frameIndex_ >= 0) {
         const bool wantImage = !options_.output.empty() || (headless() && !options_.benchmark);
         if (wantImage) {
-            picture = options_.output.empty() ? config_.name + ".png" : options_.output;
+            picture = options_.output.empty() ? fs::path(config_.name + ".png") : outputPath();
             batch.add(picture, encodePng(target_->readPixels()));
         }
     }

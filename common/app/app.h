@@ -70,6 +70,12 @@ public:
     // The value of one of the sample's own flags, when given (already checked against its
     // FlagSpec when the App was made).
     std::optional<std::string> flag(const std::string& name) const;
+    // A flag that names a file or folder, as a path: its text is UTF-8 on every platform (on
+    // Windows by the samples' manifest), and std::filesystem::path reads a narrow string there in
+    // another encoding, so every path from the command line is made here (or by pathFromUtf8).
+    std::optional<std::filesystem::path> flagPath(const std::string& name) const;
+    // --output as a path; empty when not given.
+    std::filesystem::path outputPath() const;
     // A sample flag's value converted: a Choice flag's word (its first choice when not given),
     // an Integer or Number flag's value (its FlagSpec's default when not given).
     std::string flagChoice(const std::string& name) const;

@@ -18,9 +18,11 @@ const char* variable(const char* name) {
     const char* value = std::getenv(name);
     return value && *value ? value : nullptr;
 }
+// The environment's text is UTF-8 on every platform (on Windows by the samples' manifest,
+// cmake/windows.manifest), as the flags are.
 fs::path fromEnvOr(const char* name, const char* fallback) {
     const char* value = variable(name);
-    return fs::path(value ? value : fallback);
+    return pathFromUtf8(value ? value : fallback);
 }
 }  // namespace
 
@@ -44,14 +46,19 @@ fs::path iblDir() {
 }
 
 std::optional<fs::path> defaultCacheDir() {
-    if (const char* dir = variable("PBR_CACHE_DIR")) return fs::path(dir);
-    if (const char* dir = variable("XDG_CACHE_HOME")) return fs::path(dir) / "pbr-samples";
-    if (const char* home = variable("HOME")) return fs::path(home) / ".cache" / "pbr-samples";
+    if (const char* dir = variable("PBR_CACHE_DIR")) return pathFromUtf8(dir);
+#if defined(_WIN32)
+    // Windows' place for a program's data that is not roamed to other machines
+    if (const char* dir = variable("LOCALAPPDATA")) return pathFromUtf8(dir) / "pbr-samples";
+#else
+    if (const char* dir = variable("XDG_CACHE_HOME")) return pathFromUtf8(dir) / "pbr-samples";
+    if (const char* home = variable("HOME")) return pathFromUtf8(home) / ".cache" / "pbr-samples";
+#endif
     return std::nullopt;
 }
 
 std::vector<EnvironmentVariable> environmentVariables() {
-    return {
+    std::vector<EnvironmentVariable> variables{
         // The defaults in words, not as the build's paths: a checkout's path is as long as its
         // owner made it, and the usage must read the same from any of them.
         {"PBR_SHADER_DIR", "the GLSL files (default: shaders/ of the source tree built)"},
@@ -60,14 +67,18 @@ std::vector<EnvironmentVariable> environmentVariables() {
          "build's resources/ folder)"},
         {"PBR_CACHE_DIR",
          "the IBL samples' precomputed maps (default: "
-         "$XDG_CACHE_HOME/pbr-samples, else $HOME/.cache/pbr-samples)"},
-        {"DISPLAY, WAYLAND_DISPLAY",
-         "a window needs one of them; without, the sample renders "
-         "offscreen and says so"},
-        {"PBR_PANEL_SCRIPT",
-         "the tests' way to drive the live panel headless: a file of the mouse in each frame, "
-         "\"x y button\" or \"-\" a line"},
+         "$XDG_CACHE_HOME/pbr-samples, else $HOME/.cache/pbr-samples; on Windows "
+         "%LOCALAPPDATA%\\pbr-samples)"},
     };
+    if (kDisplayVariables) {
+        variables.push_back({"DISPLAY, WAYLAND_DISPLAY",
+                             "a window needs one of them; without, the sample renders "
+                             "offscreen and says so"});
+    }
+    variables.push_back({"PBR_PANEL_SCRIPT",
+                         "the tests' way to drive the live panel headless: a file of the mouse in "
+                         "each frame, \"x y button\" or \"-\" a line"});
+    return variables;
 }
 
 std::string displayPath(const fs::path& path) {

@@ -19,8 +19,17 @@ std::filesystem::path modelDir();        // resourceDir() / "models": the projec
 std::filesystem::path environmentDir();  // resourceDir() / "environments": its HDR environments
 std::filesystem::path iblDir();          // resourceDir() / "ibl": the BRDF LUTs the build bakes
 // Where the IBL samples keep their precomputed maps: $PBR_CACHE_DIR, else
-// $XDG_CACHE_HOME/pbr-samples, else $HOME/.cache/pbr-samples; nullopt when none is set.
+// $XDG_CACHE_HOME/pbr-samples, else $HOME/.cache/pbr-samples (on Windows
+// %LOCALAPPDATA%\pbr-samples); nullopt when none is set.
 std::optional<std::filesystem::path> defaultCacheDir();
+
+// Whether a window needs a display named in the environment (DISPLAY or WAYLAND_DISPLAY), as on
+// X11 and Wayland; Windows and macOS always have their desktop, and have no such variable.
+#if defined(_WIN32) || defined(__APPLE__)
+inline constexpr bool kDisplayVariables = false;
+#else
+inline constexpr bool kDisplayVariables = true;
+#endif
 
 // Every environment variable the samples read, with what it does, for --help and the README.
 struct EnvironmentVariable {

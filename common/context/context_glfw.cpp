@@ -12,6 +12,7 @@
 #include <cstdlib>
 
 #include "base/error.h"
+#include "base/paths.h"
 #include "context/context.h"
 #include "context/web.h"
 
@@ -177,7 +178,10 @@ GLFWwindow* openWindow(const std::string& title, int width, int height, bool deb
 
 std::unique_ptr<Context> createGlfwContext(const std::string& title, int width, int height,
                                            bool debug, bool captureCursor, std::string& whyNot) {
-    if (!kWebGl) {  // a page always has its canvas
+    // X11 and Wayland need a display named in the environment: without one, the sample renders
+    // offscreen instead. Windows and macOS always have their desktop (a Windows build that
+    // asked, as it once did, never opened a window there), and a page its canvas.
+    if (kDisplayVariables && !kWebGl) {
         const char* x11 = std::getenv("DISPLAY");
         const char* wayland = std::getenv("WAYLAND_DISPLAY");
         if ((!x11 || !*x11) && (!wayland || !*wayland)) {

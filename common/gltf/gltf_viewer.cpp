@@ -146,7 +146,7 @@ int runGltfViewer(int argc, char** argv, const GltfViewerConfig& config) {
              .flags = flags,
              .srgbTarget = true,  // linear out of the shaders, encoded by the GL
              .orbitCamera = true});
-    const Model model = loadModel(app.flag("--model").value_or(config.defaultModel.string()));
+    const Model model = loadModel(app.flagPath("--model").value_or(config.defaultModel));
     const GpuModel gpuModel(model);  // every texture read: a broken one ends the run here
     describe(model, !app.options().has("--no-punctual"), config.extensions);
     app.useOrbitCamera(model.boundsMin, model.boundsMax,

@@ -127,7 +127,7 @@ std::vector<FlagSpec> iblGridFlags(bool splitSum) {
 
 fs::path environmentFile(const Options& options) {
     const auto hdr = options.sampleFlags.find("--hdr");
-    return hdr != options.sampleFlags.end() ? fs::path(hdr->second)
+    return hdr != options.sampleFlags.end() ? pathFromUtf8(hdr->second)
                                             : environmentDir() / "sunny_courtyard.hdr";
 }
 

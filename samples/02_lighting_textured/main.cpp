@@ -2,6 +2,7 @@
 // sphere in the same material from five maps (rusted iron, made by the project), one light.
 // See README.md beside this file.
 #include <array>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <utility>
@@ -74,10 +75,10 @@ int main(int argc, char** argv) try {
     const pbr::GpuMesh sphere(pbr::uvSphere(64, 64));
     // The material: --material-dir's folder, read at start-up; else the set --material names,
     // each read the first time it is shown.
-    std::map<std::string, pbr::PbrTextures> materials;
+    std::map<std::filesystem::path, pbr::PbrTextures> materials;
     const auto materialFolder = [&] {
-        return app.flag("--material-dir")
-            .value_or((pbr::materialDir() / app.flagChoice("--material")).string());
+        return app.flagPath("--material-dir")
+            .value_or(pbr::materialDir() / app.flagChoice("--material"));
     };
     materials.emplace(materialFolder(), pbr::loadPbrTextures(materialFolder(), filter));
 
@@ -94,7 +95,7 @@ int main(int argc, char** argv) try {
         }
         pbr::Shader& shader =
             app.shader("common/pbr_tangent.vert", "02_lighting_textured/pbr.frag", defines);
-        const std::string folder = materialFolder();
+        const std::filesystem::path folder = materialFolder();
         if (!materials.contains(folder)) {
             materials.emplace(folder, pbr::loadPbrTextures(folder, filter));
         }

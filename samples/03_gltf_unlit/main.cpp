@@ -19,8 +19,8 @@ int main(int argc, char** argv) try {
              "--model", "FILE", "a .gltf or .glb to draw unlit (default: the project's showcase)")},
          .srgbTarget = true});  // linear out of the shader, encoded and blended by the GL
 
-    const pbr::Model model = pbr::loadModel(
-        app.flag("--model").value_or((pbr::modelDir() / "unlit_showcase.gltf").string()));
+    const pbr::Model model =
+        pbr::loadModel(app.flagPath("--model").value_or(pbr::modelDir() / "unlit_showcase.gltf"));
     if (const auto note = pbr::defaultMaterialNote(model)) std::fprintf(stderr, "%s\n", note->c_str());
     const pbr::GpuModel gpuModel(model);
     const pbr::Texture2D white(pbr::Image{1, 1, 3, {255, 255, 255}}, pbr::ColorSpace::Srgb);

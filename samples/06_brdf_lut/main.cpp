@@ -28,10 +28,9 @@ int main(int argc, char** argv) try {
              pbr::FlagSpec::toggle("--no-cache",
                                    "compute the maps even when the cache holds them")},
          .fixedView = true});  // two panels of the table, no camera
-    const std::filesystem::path output = app.options().output;
+    const std::filesystem::path output = app.outputPath();
     const std::filesystem::path ktxDir =
-        app.flag("--ktx-dir")
-            .value_or(output.has_parent_path() ? output.parent_path().string() : ".");
+        app.flagPath("--ktx-dir").value_or(output.has_parent_path() ? output.parent_path() : ".");
 
     // The maps under the names (and with the bytes) the IBL cache gives them. They are handed to
     // the App, which writes them with the picture at the end of the run: all of them, or none.
@@ -43,7 +42,7 @@ int main(int argc, char** argv) try {
     const pbr::Texture2D brdfLUT = pbr::brdfLut(cache, 256, 1024, kChannels);
     const pbr::KtxImage lutImage = brdfLUT.toKtx(pbr::brdfLutFormat(kChannels));
     bake(pbr::brdfLutFile(256, 1024, kChannels), lutImage);
-    if (const auto hdr = app.flag("--hdr")) {
+    if (const auto hdr = app.flagPath("--hdr")) {
         pbr::IblEnvironment environment(cache, *hdr);
         bake(environment.irradianceFile(32), environment.irradianceMap(32).toKtx());
         bake(environment.prefilteredFile(128, 5, pbr::kPrefilterSamples),
