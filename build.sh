@@ -7,9 +7,11 @@
 #                            in the AddressSanitizer + UBSan build those that run every line of
 #                            ours (tests/sanitizers/release_only.txt names the others), then the
 #                            fuzz targets of our readers (clang's libFuzzer, tests/fuzz)
-# and one more:
+# and two more:
 #   ./build.sh web           install what is missing, build the samples for the browser into
 #                            build/web (open build/web/index.html)
+#   ./build.sh windows       install what is missing, cross-build every sample for 64-bit
+#                            Windows into build/windows/bin (MinGW-w64; docs/building.md)
 set -euo pipefail
 
 usage() {
@@ -22,6 +24,8 @@ usage: ./build.sh run [sample flags]   install what is missing, build, run sampl
                                        then each fuzz target for a bounded number of inputs
        ./build.sh web                  install what is missing (emscripten, Chromium), build the
                                        web samples into build/web: open build/web/index.html
+       ./build.sh windows              install what is missing (MinGW-w64, Wine), build every
+                                       sample for Windows into build/windows/bin (.exe)
        ./build.sh -h | --help          this help
 Flags after "run" go to the sample (./build.sh run --help lists them); relative paths in them
 are taken from the folder you run build.sh in.
@@ -30,8 +34,8 @@ USAGE
 
 case "${1:-}" in
     -h | --help) usage; exit 0 ;;
-    run | test | web) ;;
-    "") usage >&2; echo "build.sh: error: say run, test or web" >&2; exit 2 ;;
+    run | test | web | windows) ;;
+    "") usage >&2; echo "build.sh: error: say run, test, web or windows" >&2; exit 2 ;;
     *) usage >&2; echo "build.sh: error: unknown argument '$1'" >&2; exit 2 ;;
 esac
 if [ "$1" != run ] && [ $# -gt 1 ]; then
@@ -53,6 +57,11 @@ WEB_PACKAGES=(emscripten chromium-headless-shell)
 # The fuzz targets of our readers (tests/fuzz, the fuzz preset): Debian's clang with libFuzzer and
 # the sanitizers' runtime. About 50 MB to download.
 FUZZ_PACKAGES=(clang-19 libfuzzer-19-dev libclang-rt-19-dev)
+# The Windows build (cmake/mingw-w64.cmake, scripts/windows_deps.sh) and its tests under Wine on
+# Xvfb: Debian's MinGW-w64, zlib for it, the header-only libraries the cross-built Assimp needs,
+# dpkg-dev for apt-get source, and Wine. About 600 MB to download.
+WINDOWS_PACKAGES=(g++-mingw-w64-x86-64-posix libz-mingw-w64-dev libutfcpp-dev rapidjson-dev
+                  dpkg-dev patch wine wine64 xvfb)
 
 is_installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 
@@ -98,6 +107,27 @@ install_missing() {
     fi
 }
 
+# A build's own packages (install_extra WHAT PACKAGE...): installed where missing. Returns 1,
+# saying why, where they cannot be had.
+install_extra() {
+    local what="$1" missing=() p
+    shift
+    for p in "$@"; do is_installed "$p" || missing+=("$p"); done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    if ! apt_command; then
+        echo "build.sh: not root and no sudo; as root run: apt-get install --no-install-recommends ${missing[*]}" >&2
+        return 1
+    fi
+    echo "build.sh: installing ${missing[*]} ($what)" >&2
+    if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
+        "${APT[@]}" update -q || true
+        if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
+            echo "build.sh: could not install: ${missing[*]}" >&2
+            return 1
+        fi
+    fi
+}
+
 # The web build's packages (see WEB_PACKAGES). Returns 1, saying why, where they cannot be had.
 install_web() {
     if ! command -v dpkg-query >/dev/null 2>&1; then
@@ -108,21 +138,7 @@ install_web() {
         echo "build.sh: not a Debian system and no em++ or Chromium on PATH: no web build" >&2
         return 1
     fi
-    local missing=() p
-    for p in "${WEB_PACKAGES[@]}"; do is_installed "$p" || missing+=("$p"); done
-    [ ${#missing[@]} -eq 0 ] && return 0
-    if ! apt_command; then
-        echo "build.sh: not root and no sudo; as root run: apt-get install --no-install-recommends ${missing[*]}" >&2
-        return 1
-    fi
-    echo "build.sh: installing ${missing[*]} (the web build)" >&2
-    if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
-        "${APT[@]}" update -q || true
-        if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
-            echo "build.sh: could not install: ${missing[*]}" >&2
-            return 1
-        fi
-    fi
+    install_extra "the web build" "${WEB_PACKAGES[@]}"
 }
 
 # The fuzz build's packages (see FUZZ_PACKAGES). Returns 1, saying why, where they cannot be had.
@@ -132,21 +148,25 @@ install_fuzz() {
         echo "build.sh: not a Debian system and no clang++-19 on PATH: no fuzz build" >&2
         return 1
     fi
-    local missing=() p
-    for p in "${FUZZ_PACKAGES[@]}"; do is_installed "$p" || missing+=("$p"); done
-    [ ${#missing[@]} -eq 0 ] && return 0
-    if ! apt_command; then
-        echo "build.sh: not root and no sudo; as root run: apt-get install --no-install-recommends ${missing[*]}" >&2
+    install_extra "the fuzz build" "${FUZZ_PACKAGES[@]}"
+}
+
+# The Windows build's packages (see WINDOWS_PACKAGES); Debian only (its source packages are what
+# the libraries are built from). Returns 1, saying why, where they cannot be had.
+install_windows() {
+    if ! command -v dpkg-query >/dev/null 2>&1; then
+        echo "build.sh: not a Debian system: no Windows build (docs/building.md says how on Windows)" >&2
         return 1
     fi
-    echo "build.sh: installing ${missing[*]} (the fuzz build)" >&2
-    if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
-        "${APT[@]}" update -q || true
-        if ! "${APT[@]}" install -y -q --no-install-recommends "${missing[@]}"; then
-            echo "build.sh: could not install: ${missing[*]}" >&2
-            return 1
-        fi
-    fi
+    install_extra "the Windows build" "${WINDOWS_PACKAGES[@]}"
+}
+
+# Every sample for 64-bit Windows (the windows preset), into build/windows/bin, with the assets
+# the Release build baked; the libraries from scripts/windows_deps.sh, built once and cached.
+build_windows() {
+    local deps
+    deps=$(scripts/windows_deps.sh) || return 1
+    PBR_WINDOWS_DEPS="$deps" build windows
 }
 
 # The samples for the browser (cmake/Web.cmake), into build/web, with the assets the Release
@@ -263,6 +283,17 @@ case "${1:-}" in
         cd "$caller_dir"
         exec "$repo_dir/build/release/bin/01_lighting" "$@"
         ;;
+    windows)
+        install_missing
+        install_windows || exit 1
+        # the assets the samples read, baked by the native build (host tools)
+        cmake --preset default >/dev/null
+        cmake --build --preset default -j "$(nproc)" --target materials models environments ibl_maps
+        build_windows
+        echo "build.sh: the Windows samples are in $repo_dir/build/windows/bin; they read the" \
+             "shaders and assets of this checkout (PBR_SHADER_DIR, PBR_RESOURCE_DIR move them)." \
+             "Under Wine: tests/windows/run_wine.sh build/wine build/windows/bin/01_lighting.exe" >&2
+        ;;
     web)
         install_missing
         install_web || exit 1
@@ -274,12 +305,14 @@ case "${1:-}" in
     test)
         timed "install" install_missing
         timed "glTF validator" install_gltf_validator
-        # The web and fuzz packages download and unpack (disk and network) while the Release
-        # build compiles (the cores); their output is shown when an install fails. One after the
-        # other: apt takes one install at a time.
+        # The web, fuzz and Windows packages download and unpack (disk and network) while the
+        # Release build compiles (the cores); their output is shown when an install fails. One
+        # after the other: apt takes one install at a time.
         mkdir -p build
         { if install_web >build/web-install.log 2>&1; then echo 0; else echo 1; fi \
               >build/web-install.status
+          if install_windows >build/windows-install.log 2>&1; then echo 0; else echo 1; fi \
+              >build/windows-install.status
           install_fuzz >build/fuzz-install.log 2>&1; } &
         install_pid=$!
         timed "Release build" build default
@@ -290,6 +323,8 @@ case "${1:-}" in
         wait "$install_pid" || fuzz_status=$?
         web_status=$(cat build/web-install.status)
         [ "$web_status" -eq 0 ] || cat build/web-install.log >&2
+        windows_status=$(cat build/windows-install.status)
+        [ "$windows_status" -eq 0 ] || cat build/windows-install.log >&2
         stage_times+=" web and fuzz install (its wait after the build) $((SECONDS - start)),"
         # The fuzz build (clang) runs beside the web build, whose links leave a core idle.
         # Skipped, saying so, only where clang cannot be had at all; on Debian a failed install
@@ -312,6 +347,16 @@ case "${1:-}" in
         else
             echo "build.sh: no web build here: the web tests will be skipped" >&2
         fi
+        # Every sample for Windows, run under Wine by the windows tests (label windows). Skipped,
+        # saying so, only where it cannot be had at all; on Debian a failed install fails the
+        # command.
+        if [ "$windows_status" -eq 0 ]; then
+            timed "Windows build" build_windows
+        elif command -v dpkg-query >/dev/null 2>&1; then
+            exit 1
+        else
+            echo "build.sh: no Windows build here: the windows tests will be skipped" >&2
+        fi
         if [ -n "$fuzz_build_pid" ]; then
             start=$SECONDS
             wait "$fuzz_build_pid" || { cat build/fuzz-build.log >&2; exit 1; }
@@ -331,7 +376,9 @@ case "${1:-}" in
         if [ -n "$fuzz_build_pid" ]; then
             timed "fuzz tests" ctest --preset fuzz -j "$(nproc)"
         fi
-        timed "windowed-only build" check_windowed_build
+        # The Windows build is a windowed-only one (no OSMesa, no EGL), built and run whole;
+        # without it, one sample of such a build here
+        [ "$windows_status" -eq 0 ] || timed "windowed-only build" check_windowed_build
         echo "build.sh: all tests passed; seconds taken:${stage_times%,}" >&2
         ;;
 esac

@@ -311,6 +311,8 @@ def variables_read(source, folders):
             text = path.read_text(errors="replace")
             names |= set(re.findall(r"(?:getenv|variable|fromEnvOr|environ(?:\.get)?)\s*[(\[]\s*\"([A-Z_]+)\"",
                                     text))
+            if path.suffix == ".sh":  # a shell script's ${NAME:-default}
+                names |= set(re.findall(r"\$\{([A-Z_]+):-", text))
     return names
 
 
