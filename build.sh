@@ -164,8 +164,13 @@ install_windows() {
 # Every sample for 64-bit Windows (the windows preset), into build/windows/bin, with the assets
 # the Release build baked; the libraries from scripts/windows_deps.sh, built once and cached.
 build_windows() {
-    local deps
+    local deps cache=build/windows/CMakeCache.txt
     deps=$(scripts/windows_deps.sh) || return 1
+    # A build configured against another prefix (older libraries) keeps the paths it found there:
+    # configured afresh
+    if [ -f "$cache" ] && grep -o "windows-deps/[0-9a-f]*/" "$cache" | grep -qvF "/${deps##*/}/"; then
+        rm -f "$cache"
+    fi
     PBR_WINDOWS_DEPS="$deps" build windows
 }
 
@@ -292,7 +297,8 @@ case "${1:-}" in
         build_windows
         echo "build.sh: the Windows samples are in $repo_dir/build/windows/bin; they read the" \
              "shaders and assets of this checkout (PBR_SHADER_DIR, PBR_RESOURCE_DIR move them)." \
-             "Under Wine: tests/windows/run_wine.sh build/wine build/windows/bin/01_lighting.exe" >&2
+             "Under Wine (a window on a display of its own, and its picture with --output):" \
+             "tests/windows/run_wine.sh build/wine build/windows/bin/01_lighting.exe --frames 10" >&2
         ;;
     web)
         install_missing

@@ -3,7 +3,8 @@
 # under Wine, in a window on an X display of its own (Xvfb), and exits with its exit code:
 #
 #     run_wine.sh PREFIX PROGRAM.exe [ARGUMENTS...]
-#     run_wine.sh PREFIX --make-prefix      makes the Wine prefix PREFIX where it is missing
+#     run_wine.sh PREFIX --make-prefix      makes the Wine prefix PREFIX where it is missing (a
+#                                           run makes it first where it is missing: about 13 s)
 #
 # PREFIX is the Wine prefix (its C: drive and registry), shared by the tests and made once, by
 # the windows_wine_prefix fixture: made under a temporary name and renamed, so that it is whole or
@@ -16,13 +17,14 @@ set -eu
 [ $# -ge 2 ] || { echo "usage: run_wine.sh PREFIX PROGRAM.exe [ARGUMENTS...] | PREFIX --make-prefix" >&2; exit 2; }
 prefix="$1"
 shift
+case "$prefix" in /*) ;; *) prefix="$PWD/$prefix" ;; esac  # Wine takes an absolute path only
 export WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml=" WINEPREFIX="$prefix" LC_ALL=C.UTF-8
 
-if [ "$1" = --make-prefix ]; then
-    [ -f "$prefix/system.reg" ] && exit 0
+make_prefix() {
+    [ -f "$prefix/system.reg" ] && return 0
     if ! command -v wine >/dev/null 2>&1; then
         echo "run_wine.sh: no wine (Debian: wine): no prefix, and the windows tests are skipped"
-        exit 0
+        return 0
     fi
     temporary="$prefix.making.$$"
     rm -rf "$temporary"
@@ -38,8 +40,9 @@ if [ "$1" = --make-prefix ]; then
     rm -f "$temporary.log"
     rm -rf "$prefix"
     mv "$temporary" "$prefix"
-    exit 0
-fi
+}
+make_prefix
+[ "$1" = --make-prefix ] && exit 0
 
 work=$(mktemp -d)
 xvfb=""
