@@ -1,31 +1,32 @@
 #!/bin/sh
 # tests/windows/run_wine.sh: runs a Windows program of the Windows build (./build.sh windows)
-# under Wine, in a window on an X display of its own (Xvfb), and exits with its exit code:
+# under Wine, in a window on an X display (Xvfb), and exits with its exit code:
 #
 #     run_wine.sh PREFIX PROGRAM.exe [ARGUMENTS...]
-#     run_wine.sh PREFIX --make-prefix      makes the Wine prefix PREFIX where it is missing (a
-#                                           run makes it first where it is missing: about 13 s)
+#     run_wine.sh PREFIX --start     makes the Wine prefix PREFIX where it is missing, and starts
+#                                    a session for the runs to share: an Xvfb display and Wine's
+#                                    server, kept running (the windows tests' fixture)
+#     run_wine.sh PREFIX --stop      ends that session
 #
-# PREFIX is the Wine prefix (its C: drive and registry), shared by the tests and made once, by
-# the windows_wine_prefix fixture: made under a temporary name and renamed, so that it is whole or
-# absent. One run at a time in a prefix (the tests hold a CTest lock on it): each run starts its
-# own Xvfb, which picks a free display itself (-displayfd), and ends every Wine process of the
-# prefix before its display goes. Wine's own messages are off (WINEDEBUG=-all); Wine's .NET and
-# HTML engines, which a new prefix offers to download, are declined. The text of the command line
-# is UTF-8 (LC_ALL=C.UTF-8): Wine reads a non-ASCII path there in the locale's encoding.
+# PREFIX is the Wine prefix (its C: drive and registry), made under a temporary name and renamed,
+# so that it is whole or absent (about 13 s; a run makes it first where it is missing). A run
+# inside a session takes its display and its warm server (the tests' runs, side by side: 3 s for
+# a sample's picture); a run outside one starts an Xvfb of its own, which picks a free display
+# itself (-displayfd), and ends every Wine process of the prefix before its display goes (5 s).
+# A session's Xvfb ends after 30 minutes whatever happens, and Wine's server a minute after its
+# last program. Wine's own messages are off (WINEDEBUG=-all); Wine's .NET and HTML engines,
+# which a new prefix offers to download, are declined. The text of the command line is UTF-8
+# (LC_ALL=C.UTF-8): Wine reads a non-ASCII path there in the locale's encoding.
 set -eu
-[ $# -ge 2 ] || { echo "usage: run_wine.sh PREFIX PROGRAM.exe [ARGUMENTS...] | PREFIX --make-prefix" >&2; exit 2; }
+[ $# -ge 2 ] || { echo "usage: run_wine.sh PREFIX PROGRAM.exe [ARGUMENTS...] | PREFIX --start | PREFIX --stop" >&2; exit 2; }
 prefix="$1"
 shift
 case "$prefix" in /*) ;; *) prefix="$PWD/$prefix" ;; esac  # Wine takes an absolute path only
 export WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml=" WINEPREFIX="$prefix" LC_ALL=C.UTF-8
+session="$prefix.session"  # "DISPLAY-NUMBER XVFB-PID" of the running session
 
 make_prefix() {
     [ -f "$prefix/system.reg" ] && return 0
-    if ! command -v wine >/dev/null 2>&1; then
-        echo "run_wine.sh: no wine (Debian: wine): no prefix, and the windows tests are skipped"
-        return 0
-    fi
     temporary="$prefix.making.$$"
     rm -rf "$temporary"
     mkdir -p "$(dirname "$prefix")"
@@ -41,8 +42,57 @@ make_prefix() {
     rm -rf "$prefix"
     mv "$temporary" "$prefix"
 }
-make_prefix
-[ "$1" = --make-prefix ] && exit 0
+
+# Starts an Xvfb (START_XVFB WORK LIFETIME): its display number in $display, its process in $xvfb
+start_xvfb() {
+    rm -f "$1/display"  # (written by Xvfb once it listens; an old one must not be taken for it)
+    timeout "$2" Xvfb -displayfd 5 -screen 0 1920x1080x24 -nolisten tcp </dev/null >/dev/null \
+        5>"$1/display" 2>"$1/xvfb.log" &
+    xvfb=$!
+    tries=0
+    while [ ! -s "$1/display" ]; do
+        tries=$((tries + 1))
+        if [ "$tries" -gt 200 ] || ! kill -0 "$xvfb" 2>/dev/null; then
+            cat "$1/xvfb.log" >&2
+            echo "run_wine.sh: Xvfb did not start" >&2
+            exit 1
+        fi
+        sleep 0.05
+    done
+    display=$(cat "$1/display")
+}
+
+stop_session() {
+    [ -f "$session" ] || return 0
+    pid=$(cut -d" " -f2 "$session")
+    rm -f "$session"
+    wineserver -k 2>/dev/null || true
+    wineserver -w 2>/dev/null || true
+    [ -z "${pid:-}" ] || kill "$pid" 2>/dev/null || true
+}
+
+case "$1" in
+    --start | --make-prefix)
+        if ! command -v wine >/dev/null 2>&1; then
+            echo "run_wine.sh: no wine (Debian: wine): no prefix, and the windows tests are skipped"
+            exit 0
+        fi
+        make_prefix
+        [ "$1" = --start ] || exit 0
+        stop_session
+        mkdir -p "$prefix.xvfb"
+        start_xvfb "$prefix.xvfb" 1800
+        # Wine's server stays a minute after its last program, not just the usual 3 seconds
+        DISPLAY=":$display" wineserver -p60 </dev/null >/dev/null 2>&1
+        echo "$display $xvfb" >"$session.new"
+        mv "$session.new" "$session"
+        exit 0
+        ;;
+    --stop)
+        stop_session
+        exit 0
+        ;;
+esac
 
 work=$(mktemp -d)
 xvfb=""
@@ -51,24 +101,21 @@ cleanup() {
     rm -rf "$work"
 }
 trap cleanup EXIT
-Xvfb -displayfd 5 -screen 0 1920x1080x24 -nolisten tcp 5>"$work/display" 2>"$work/xvfb.log" &
-xvfb=$!
-tries=0
-while [ ! -s "$work/display" ]; do
-    tries=$((tries + 1))
-    if [ "$tries" -gt 200 ] || ! kill -0 "$xvfb" 2>/dev/null; then
-        cat "$work/xvfb.log" >&2
-        echo "run_wine.sh: Xvfb did not start" >&2
-        exit 1
-    fi
-    sleep 0.05
-done
+shared=""
+if [ -f "$session" ] && read -r display pid <"$session" && kill -0 "$pid" 2>/dev/null; then
+    shared=yes
+else
+    make_prefix
+    start_xvfb "$work" 600
+fi
 # The program's errors are kept apart from what Wine's own processes (its desktop, its services)
 # may print when their display goes away, and shown after it has ended.
 status=0
-DISPLAY=":$(cat "$work/display")" wine "$@" 2>"$work/stderr" || status=$?
-# Wine's processes of this prefix end with the run, before its display does
-wineserver -k 2>/dev/null || true
-wineserver -w 2>/dev/null || true
+DISPLAY=":$display" wine "$@" 2>"$work/stderr" || status=$?
+if [ -z "$shared" ]; then
+    # Wine's processes of this prefix end with the run, before its display does
+    wineserver -k 2>/dev/null || true
+    wineserver -w 2>/dev/null || true
+fi
 cat "$work/stderr" >&2
 exit "$status"
