@@ -211,6 +211,20 @@ install_gltf_validator() {
     fi
 }
 
+# A build of the test command that needs packages of its own (optional_build INSTALL-STATUS
+# STAGE LABEL FUNCTION): made where they were installed; skipped, saying so, only where they
+# cannot be had at all (not Debian); on Debian a failed install fails the command (CI never
+# skips the LABEL tests).
+optional_build() {
+    if [ "$1" -eq 0 ]; then
+        timed "$2" "$4"
+    elif command -v dpkg-query >/dev/null 2>&1; then
+        exit 1
+    else
+        echo "build.sh: no $2 here: the $3 tests will be skipped" >&2
+    fi
+}
+
 # Runs a stage of the test command and keeps how long it took, for the summary at the end, with
 # how busy the cores were (Linux: /proc/stat's user and system time against all of it; niced
 # work, a fuzzing campaign beside, is not counted): a stage well under 100% has cores to share.
@@ -346,23 +360,9 @@ case "${1:-}" in
             cat build/fuzz-install.log >&2
             echo "build.sh: no fuzz build here: the fuzz tests are skipped" >&2
         fi
-        if [ "$web_status" -eq 0 ]; then
-            timed "web build" build_web
-        elif command -v dpkg-query >/dev/null 2>&1; then
-            exit 1
-        else
-            echo "build.sh: no web build here: the web tests will be skipped" >&2
-        fi
-        # Every sample for Windows, run under Wine by the windows tests (label windows). Skipped,
-        # saying so, only where it cannot be had at all; on Debian a failed install fails the
-        # command.
-        if [ "$windows_status" -eq 0 ]; then
-            timed "Windows build" build_windows
-        elif command -v dpkg-query >/dev/null 2>&1; then
-            exit 1
-        else
-            echo "build.sh: no Windows build here: the windows tests will be skipped" >&2
-        fi
+        optional_build "$web_status" "web build" web build_web
+        # every sample for Windows, run under Wine by the windows tests
+        optional_build "$windows_status" "Windows build" windows build_windows
         if [ -n "$fuzz_build_pid" ]; then
             start=$SECONDS
             wait "$fuzz_build_pid" || { cat build/fuzz-build.log >&2; exit 1; }
