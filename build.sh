@@ -59,9 +59,9 @@ WEB_PACKAGES=(emscripten chromium-headless-shell)
 FUZZ_PACKAGES=(clang-19 libfuzzer-19-dev libclang-rt-19-dev)
 # The Windows build (cmake/mingw-w64.cmake, scripts/windows_deps.sh) and its tests under Wine on
 # Xvfb: Debian's MinGW-w64, zlib for it, the header-only libraries the cross-built Assimp needs,
-# dpkg-dev for apt-get source, and Wine. About 600 MB to download.
+# dpkg-dev for apt-get source, and Wine. About 200 MB to download.
 WINDOWS_PACKAGES=(g++-mingw-w64-x86-64-posix libz-mingw-w64-dev libutfcpp-dev rapidjson-dev
-                  dpkg-dev patch wine wine64 xvfb)
+                  dpkg-dev patch pkg-config wine wine64 xvfb)
 
 is_installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "install ok installed"; }
 

@@ -23,6 +23,11 @@ CXX=$TRIPLET-g++-posix
 script="$(cd "$(dirname "$0")" && pwd)/$(basename "$0")"
 repo_dir="$(cd "$(dirname "$0")/.." && pwd)"
 command -v "$CXX" >/dev/null || { echo "windows_deps.sh: no $CXX (g++-mingw-w64-x86-64-posix)" >&2; exit 1; }
+# Assimp finds this prefix's minizip through pkg-config only (without it, it asks for the bundled
+# copy that Debian's source leaves out); dpkg-source unpacks what apt-get source fetches
+for tool in pkg-config dpkg-source patch cmake; do
+    command -v "$tool" >/dev/null || { echo "windows_deps.sh: no $tool (./build.sh windows installs what is needed)" >&2; exit 1; }
+done
 key=$( { printf '%s\n' "${SOURCES[@]}"; "$CXX" --version | head -1; cat "$script"; } | sha256sum | cut -c1-16)
 cache="${PBR_WINDOWS_DEPS_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/pbr-samples/windows-deps}"
 prefix="$cache/$key"
