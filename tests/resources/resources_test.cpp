@@ -151,20 +151,15 @@ struct ValidatorRun {
 ValidatorRun validateGltf(const fs::path& file, const std::vector<std::string>& flags = {}) {
     const fs::path validator =
         fs::path(PBR_PATH(PBR_NODE_TOOLS_DIR)) / "node_modules" / "gltf-validator";
-    std::string nodePath;  // the first node on PATH
-    std::istringstream path(std::getenv("PATH") ? std::getenv("PATH") : "");
-    for (std::string dir; nodePath.empty() && std::getline(path, dir, ':');) {
-        if (!dir.empty() && fs::exists(fs::path(dir) / "node"))
-            nodePath = (fs::path(dir) / "node").string();
-    }
-    if (nodePath.empty()) return {"node is not installed: the glTF validator check is skipped", {}};
+    const std::optional<fs::path> node = onPath("node");
+    if (!node) return {"node is not installed: the glTF validator check is skipped", {}};
     if (!fs::exists(validator)) {
         return {"gltf-validator is not installed in " + std::string(PBR_PATH(PBR_NODE_TOOLS_DIR)) +
                     " (./build.sh installs it with npm): the check is skipped",
                 {}};
     }
     std::vector<std::string> argv = {
-        nodePath,
+        node->string(),
         (fs::path(PBR_PATH(PBR_SOURCE_DIR)) / "tests/resources/validate_gltf.js").string(),
         validator.string(), file.string()};
     argv.insert(argv.end(), flags.begin(), flags.end());

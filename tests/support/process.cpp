@@ -18,12 +18,36 @@ namespace pbr::test {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> RunResult::errLines() const {
+namespace {
+// A program's output, a line each; a Windows program's CR LF ends its lines too.
+std::vector<std::string> linesOf(const std::string& text) {
     std::vector<std::string> lines;
-    std::istringstream in(err);
-    std::string line;
-    while (std::getline(in, line)) lines.push_back(line);
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        lines.push_back(line);
+    }
     return lines;
+}
+}  // namespace
+
+std::vector<std::string> RunResult::errLines() const {
+    return linesOf(err);
+}
+std::vector<std::string> RunResult::outLines() const {
+    return linesOf(out);
+}
+
+std::optional<fs::path> onPath(const std::string& program) {
+    const char* path = std::getenv("PATH");
+    std::istringstream dirs(path ? path : "");
+    std::string dir;
+    while (std::getline(dirs, dir, ':')) {
+        const fs::path candidate = fs::path(dir) / program;
+        std::error_code ec;
+        if (!dir.empty() && fs::is_regular_file(candidate, ec)) return candidate;
+    }
+    return std::nullopt;
 }
 
 fs::path sampleExecutable(const std::string& name) {

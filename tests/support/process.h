@@ -3,6 +3,7 @@
 // messages and the images it writes.
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,9 @@ struct RunResult {
     int exitCode = -1;  // -1: killed by a signal (a crash)
     std::string out;
     std::string err;
+    // The lines of err and out, without their ends (LF, or a Windows program's CR LF).
     std::vector<std::string> errLines() const;
+    std::vector<std::string> outLines() const;
 };
 
 struct RunOptions {
@@ -38,6 +41,9 @@ std::string readBytes(const std::filesystem::path& path);
 
 // A backend's name as a gtest parameter name ("egl-software" -> "egl_software").
 std::string paramName(std::string name);
+
+// Where `program` is found on PATH, if anywhere.
+std::optional<std::filesystem::path> onPath(const std::string& program);
 
 // The full path of a sample executable.
 std::filesystem::path sampleExecutable(const std::string& name);

@@ -15,18 +15,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::optional<fs::path> onPath(const std::string& program) {
-    const char* path = std::getenv("PATH");
-    std::istringstream dirs(path ? path : "");
-    std::string dir;
-    while (std::getline(dirs, dir, ':')) {
-        const fs::path candidate = fs::path(dir) / program;
-        std::error_code ec;
-        if (!dir.empty() && fs::is_regular_file(candidate, ec)) return candidate;
-    }
-    return std::nullopt;
-}
-
 std::optional<fs::path> firstOnPath(std::initializer_list<const char*> names) {
     for (const char* name : names) {
         if (auto found = onPath(name)) return found;
