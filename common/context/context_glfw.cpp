@@ -5,6 +5,9 @@
 // canvas with a WebGL 2 context, every swap waits for the browser's next animation frame, and
 // the same canvas serves the offscreen backend ("webgl": nothing shown, the frame handed to the
 // page; see createWebGlContext).
+#ifdef _WIN32
+#include <windows.h>  // (before GL's and GLFW's headers, which define APIENTRY where it is not)
+#endif
 #include "gl/gl.h"  // glad provides the GL declarations; GLFW must not include its own
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -25,6 +28,21 @@ std::string lastGlfwError;
 void onGlfwError(int, const char* description) {
     lastGlfwError = description ? description : "";
 }
+
+#ifdef _WIN32
+// GLFW 3.3 loads an XInput DLL at glfwInit (for joysticks) and frees it at glfwTerminate. Wine
+// 8's XInput stops its device thread when it is unloaded so, and is unmapped before that thread
+// has left the DLL's code: a page fault at exit, after the picture is written, in about 1 run in
+// 100 under Wine (docs/building.md). Pinned, the DLL stays until the process ends, when its
+// thread ends with the process; on Windows it is a system DLL, kept loaded anyway.
+void keepXInputLoaded() {
+    for (const wchar_t* name : {L"xinput1_4.dll", L"xinput1_3.dll", L"xinput9_1_0.dll",
+                                L"xinput1_2.dll", L"xinput1_1.dll"}) {
+        HMODULE module = nullptr;
+        if (GetModuleHandleExW(GET_MODULE_HANDLE_EX_FLAG_PIN, name, &module)) return;
+    }
+}
+#endif
 
 class GlfwContext final : public Context {
 public:
@@ -142,6 +160,9 @@ GLFWwindow* openWindow(const std::string& title, int width, int height, bool deb
         whyNot = "GLFW cannot start: " + lastGlfwError;
         return nullptr;
     }
+#ifdef _WIN32
+    keepXInputLoaded();  // the one of them GLFW loaded (it tries them in this order)
+#endif
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, kWebGl ? 0 : 3);
     if (!kWebGl) glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);

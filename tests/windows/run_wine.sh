@@ -14,7 +14,8 @@
 # a sample's picture); a run outside one starts an Xvfb of its own, which picks a free display
 # itself (-displayfd), and ends every Wine process of the prefix before its display goes (5 s).
 # A session's Xvfb ends after 30 minutes whatever happens, and Wine's server a minute after its
-# last program. Wine's own messages are off (WINEDEBUG=-all); Wine's .NET and HTML engines,
+# last program. Wine's own messages are off (WINEDEBUG=-all, or PBR_WINEDEBUG's channels where it
+# is set: a test reads the loader's, +loaddll); Wine's .NET and HTML engines,
 # which a new prefix offers to download, are declined. The text of the command line is UTF-8
 # (LC_ALL=C.UTF-8): Wine reads a non-ASCII path there in the locale's encoding.
 set -eu
@@ -22,7 +23,7 @@ set -eu
 prefix="$1"
 shift
 case "$prefix" in /*) ;; *) prefix="$PWD/$prefix" ;; esac  # Wine takes an absolute path only
-export WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml=" WINEPREFIX="$prefix" LC_ALL=C.UTF-8
+export WINEDEBUG="${PBR_WINEDEBUG:--all}" WINEDLLOVERRIDES="mscoree,mshtml=" WINEPREFIX="$prefix" LC_ALL=C.UTF-8
 session="$prefix.session"  # "DISPLAY-NUMBER XVFB-PID" of the running session
 
 make_prefix() {
