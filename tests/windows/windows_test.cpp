@@ -240,7 +240,7 @@ TEST(Windows, XInputStaysLoadedUntilTheProcessEnds) {
     const fs::path dir = testOutputDir("windows_xinput");
     const RunResult run =
         runWindows("01_lighting", {"--frames", "1", "--size", "64x64", "--output", "out.png"}, dir,
-                   {.setEnv = {{"PBR_WINEDEBUG", "+loaddll"}}});
+                   {.setEnv = {{"PBR_WINEDEBUG", "-all,+loaddll"}}});
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
     bool loaded = false;
     std::istringstream trace(run.err);
