@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
-#include <sstream>
 
 #include "base/paths.h"
 #include "support/build_paths.h"
@@ -243,8 +242,7 @@ TEST(Windows, XInputStaysLoadedUntilTheProcessEnds) {
                    {.setEnv = {{"PBR_WINEDEBUG", "-all,+loaddll"}}});
     ASSERT_EQ(run.exitCode, 0) << run.out << run.err;
     bool loaded = false;
-    std::istringstream trace(run.err);
-    for (std::string line; std::getline(trace, line);) {
+    for (const std::string& line : run.errLines()) {
         if (line.find("xinput") == std::string::npos) continue;
         loaded = loaded || line.find("Loaded ") != std::string::npos;
         EXPECT_EQ(line.find("Unloaded module"), std::string::npos) << line;
