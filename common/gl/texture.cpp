@@ -7,21 +7,21 @@
 #include "base/error.h"
 #include "base/paths.h"
 #include "files/material_folder.h"
+#include "files/mip_chain.h"
 #include "gl/framebuffer.h"
 
 namespace pbr {
 
 namespace {
-// GL 3.3 has sRGB formats for RGB and RGBA only: grey (and grey + alpha) become RGB (RGBA). On
-// WebGL 2 RGB becomes RGBA too: SRGB8 cannot be rendered into, so its mip chain cannot be made.
+// GL 3.3 has sRGB formats for RGB and RGBA only: grey (and grey + alpha) become RGB (RGBA).
 bool needsWidening(const Image& image) {
-    return image.channels < 3 || (image.channels == 3 && kWebGl);
+    return image.channels < 3;
 }
 
 // Each pixel written in place, no call per pixel: a page's program routes every call that may
 // throw through JavaScript (its exceptions), which made the five albedo maps of 09 cost 0.3 s.
 Image widenForSrgb(const Image& image) {
-    const bool alpha = image.channels == 2 || kWebGl;
+    const bool alpha = image.channels == 2;
     const int in = image.channels, out = alpha ? 4 : 3;
     Image wide{image.width, image.height, out, {}};
     const size_t count = size_t(image.width) * size_t(image.height);
@@ -95,7 +95,13 @@ Texture2D::Texture2D(const Image& source, ColorSpace colorSpace, TextureFilter f
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
     if (filter == TextureFilter::Trilinear) {
-        glGenerateMipmap(GL_TEXTURE_2D);
+        // The texts call glGenerateMipmap here; the chain is made on the CPU instead, the same on
+        // every GL (files/mip_chain.h says why).
+        const std::vector<Image> levels = mipChain(image, colorSpace == ColorSpace::Srgb);
+        for (size_t i = 0; i < levels.size(); ++i) {
+            glTexImage2D(GL_TEXTURE_2D, GLint(i + 1), GLint(internalFormat), levels[i].width,
+                         levels[i].height, 0, format, GL_UNSIGNED_BYTE, levels[i].pixels.data());
+        }
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     } else {

@@ -18,6 +18,7 @@
 #include "base/paths.h"
 #include "context/context.h"
 #include "files/ktx.h"
+#include "files/mip_chain.h"
 #include "gl/framebuffer.h"
 #include "gl/light_buffer.h"
 #include "gl/mesh.h"
@@ -1515,6 +1516,44 @@ TEST(Gl, SrgbTexturesKeepEveryChannelOfTheirImage) {
                         << "texel " << x << "," << y << " channel " << c;
                 }
             }
+        }
+    }
+    while (app.nextFrame()) {
+    }
+}
+
+// A trilinear texture carries the CPU's mip chain (files/mip_chain.h) at every level, down to
+// 1x1 and no further: sides of 6 and 5 make levels of 3x2 and 1x1 (rows of 9 bytes, which GL
+// reads right only with an unpack alignment of 1), linear RGB and sRGB RGBA alike.
+TEST(Gl, TrilinearTexturesCarryTheMipChainAtEveryLevel) {
+    const fs::path dir = test::testOutputDir("gl_mip_chain");
+    App app = makeApp(dir);
+    for (int channels : {3, 4}) {
+        const ColorSpace space = channels == 3 ? ColorSpace::Linear : ColorSpace::Srgb;
+        SCOPED_TRACE(channels == 3 ? "linear RGB" : "sRGB RGBA");
+        Image image{6, 5, channels, {}};
+        for (int i = 0; i < 6 * 5 * channels; ++i)
+            image.pixels.push_back(std::uint8_t(29 * i % 256));
+        const std::vector<Image> chain = mipChain(image, space == ColorSpace::Srgb);
+        ASSERT_EQ(chain.size(), 2u);
+        const Texture2D texture(image, space);
+        glBindTexture(GL_TEXTURE_2D, texture.id());
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        for (int level = 1; level <= 3; ++level) {
+            GLint width = 0, height = 0;
+            glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_WIDTH, &width);
+            glGetTexLevelParameteriv(GL_TEXTURE_2D, level, GL_TEXTURE_HEIGHT, &height);
+            if (level == 3) {
+                EXPECT_EQ(width, 0) << "a level past 1x1";
+                break;
+            }
+            const Image& expected = chain[size_t(level - 1)];
+            ASSERT_EQ(width, expected.width);
+            ASSERT_EQ(height, expected.height);
+            std::vector<std::uint8_t> stored(expected.pixels.size());
+            glGetTexImage(GL_TEXTURE_2D, level, channels == 3 ? GL_RGB : GL_RGBA, GL_UNSIGNED_BYTE,
+                          stored.data());
+            EXPECT_EQ(stored, expected.pixels) << "level " << level;
         }
     }
     while (app.nextFrame()) {
