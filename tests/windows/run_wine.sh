@@ -110,11 +110,23 @@ else
     start_xvfb "$work" 600
 fi
 # The program's errors are kept apart from what Wine's own processes (its desktop, its services)
-# may print when their display goes away, and shown after it has ended.
-status=0
-started=$(date +%s.%N)
-DISPLAY=":$display" wine "$@" 2>"$work/stderr" || status=$?
-if [ "$status" -ne 0 ] && [ ! -s "$work/stderr" ]; then
+# may print when their display goes away, and shown after it has ended; so is its output, which a
+# failed start is told by.
+run() {
+    status=0
+    started=$(date +%s.%N)
+    DISPLAY=":$display" wine "$@" >"$work/stdout" 2>"$work/stderr" || status=$?
+}
+run "$@"
+if [ "$status" -ne 0 ] && grep -q "^Application could not be started" "$work/stdout"; then
+    # Wine could not map the program and its start.exe could not either ("ShellExecuteEx failed:
+    # Internal error", after 0.09 s, seen once early in a fresh session): the program never ran.
+    # Said so, and started once more.
+    echo "run_wine.sh: Wine could not start $1 ($(head -c 200 "$work/stdout" | tr '\r\n' '  '));" \
+         "starting it again" >&2
+    run "$@"
+fi
+if [ "$status" -ne 0 ] && [ ! -s "$work/stderr" ] && [ ! -s "$work/stdout" ]; then
     # Every failure of a sample says why on stderr: a silent one is Wine's (seen once in about 500
     # runs, after 0.04 s, and not since), said so for the next time
     took=$(awk -v a="$started" -v b="$(date +%s.%N)" 'BEGIN { printf "%.2f", b - a }')
@@ -127,5 +139,6 @@ if [ -z "$shared" ]; then
     wineserver -k 2>/dev/null || true
     wineserver -w 2>/dev/null || true
 fi
+cat "$work/stdout"
 cat "$work/stderr" >&2
 exit "$status"
