@@ -42,11 +42,11 @@ std::optional<std::string> backendUnavailable(const RunResult& run, const std::s
 }
 
 SampleRender renderSample(const std::string& sample, const fs::path& output,
-                          const std::vector<std::string>& args) {
+                          const std::vector<std::string>& args, const RunOptions& options) {
     std::vector<std::string> argv = {sample, "--headless", "--output", output.string()};
     argv.insert(argv.end(), args.begin(), args.end());
     SampleRender render;
-    render.run = runSample(argv);
+    render.run = runSample(argv, options);
     render.image = output;
     // "<sample>: wrote <path> (<W>x<H>, msaa <N>, <backend>, <renderer>)"
     std::istringstream lines(render.run.out);

@@ -57,7 +57,8 @@ std::optional<std::string> backendUnavailable(const RunResult& run, const std::s
 
 // Runs `sample --headless --output <output> <args...>`.
 SampleRender renderSample(const std::string& sample, const std::filesystem::path& output,
-                          const std::vector<std::string>& args = {});
+                          const std::vector<std::string>& args = {},
+                          const RunOptions& options = {});
 
 // Renders each of `views` (--view words) in one run of `sample --headless <args...>`: a panel
 // script (PBR_PANEL_SCRIPT) sets --view live before each picture and writes it (F12), as the
