@@ -164,14 +164,15 @@ install_windows() {
 # Every sample for 64-bit Windows (the windows preset), into build/windows/bin, with the assets
 # the Release build baked; the libraries from scripts/windows_deps.sh, built once and cached.
 build_windows() {
-    local deps cache=build/windows/CMakeCache.txt
+    local deps cache=build/windows/CMakeCache.txt stamp=build/windows/pbr-windows-deps.txt
     deps=$(scripts/windows_deps.sh) || return 1
-    # A build configured against another prefix (older libraries) keeps the paths it found there:
-    # configured afresh
-    if [ -f "$cache" ] && grep -o "windows-deps/[0-9a-f]*/" "$cache" | grep -qvF "/${deps##*/}/"; then
+    # A build configured against another prefix (older libraries, another cache folder) keeps the
+    # paths it found there: configured afresh
+    if [ -f "$cache" ] && [ "$(cat "$stamp" 2>/dev/null)" != "$deps" ]; then
         rm -f "$cache"
     fi
     PBR_WINDOWS_DEPS="$deps" build windows
+    echo "$deps" >"$stamp.tmp" && mv -f "$stamp.tmp" "$stamp"
 }
 
 # The samples for the browser (cmake/Web.cmake), into build/web, with the assets the Release
