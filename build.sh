@@ -325,15 +325,16 @@ case "${1:-}" in
         ;;
     test)
         timed "install" install_missing
-        timed "glTF validator" install_gltf_validator
-        # The web, fuzz and Windows packages download and unpack (disk and network) while the
-        # Release build compiles (the cores); their output is shown when an install fails. One
-        # after the other: apt takes one install at a time.
+        # The web, Windows and fuzz packages and the node tools (npm) download and unpack (disk
+        # and network) while the Release build compiles (the cores); their output is shown when
+        # an install fails. One after the other: apt takes one install at a time.
         mkdir -p build
         { if install_web >build/web-install.log 2>&1; then echo 0; else echo 1; fi \
               >build/web-install.status
           if install_windows >build/windows-install.log 2>&1; then echo 0; else echo 1; fi \
               >build/windows-install.status
+          if (install_gltf_validator) >build/node-tools-install.log 2>&1; then echo 0; else echo 1; fi \
+              >build/node-tools-install.status
           install_fuzz >build/fuzz-install.log 2>&1; } &
         install_pid=$!
         timed "Release build" build default
@@ -346,7 +347,13 @@ case "${1:-}" in
         [ "$web_status" -eq 0 ] || cat build/web-install.log >&2
         windows_status=$(cat build/windows-install.status)
         [ "$windows_status" -eq 0 ] || cat build/windows-install.log >&2
-        stage_times+=" web and fuzz install (its wait after the build) $((SECONDS - start)),"
+        # (the node tools' install says why their tests will be skipped, where they will be)
+        if [ "$(cat build/node-tools-install.status)" -ne 0 ]; then
+            cat build/node-tools-install.log >&2
+            exit 1
+        fi
+        grep "^build.sh: " build/node-tools-install.log >&2 || true
+        stage_times+=" web, Windows, node tools and fuzz install (its wait after the build) $((SECONDS - start)),"
         # The fuzz build (clang) runs beside the web build, whose links leave a core idle.
         # Skipped, saying so, only where clang cannot be had at all; on Debian a failed install
         # fails the command.
