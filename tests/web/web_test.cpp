@@ -349,8 +349,8 @@ TEST(Web, KeysAndMouseMoveTheCamera) {
     struct Picture {
         double covered = 0.0, centreX = 0.0;
     };
-    // without multisampling (the direction of a move does not need it): SwiftShader's frame of
-    // 01 takes a third of the time
+    // without multisampling (the direction of a move does not need it): SwiftShader draws 01's
+    // frames in less than half the time (30 frames at 320x180: 37 CPU-s with 4x MSAA, 17 without)
     const std::vector<std::string> args = {"--frames", "4",       "--size",   "320x180",
                                            "--msaa",   "0",       "--camera", "0,0,20",
                                            "--output", "last.png"};
