@@ -1,7 +1,10 @@
 // The golden report's bookends, run by ctest as fixtures around the golden tests:
 //   golden_report reset   empties the report folder before the run
 //   golden_report check   after the run: the page exists, has entries, and every picture it
-//                         shows exists; prints the page's path
+//                         shows exists; prints the page's path. A run that compared no golden
+//                         (a subset such as `ctest -R Web.KeysAndMouse`, whose tests share the
+//                         fixture) has no entries folder, which the first comparison makes
+//                         before it writes anything: said, and not a failure
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -24,6 +27,11 @@ int main(int argc, char** argv) {
         return 2;
     }
     const fs::path page = pbr::test::goldenReportPage();
+    std::error_code ec;
+    if (!fs::exists(dir / "entries", ec) && !fs::exists(page, ec)) {
+        std::printf("golden report: no golden picture was compared in this run\n");
+        return 0;
+    }
     std::string html;
     try {
         html = pbr::readTextFile(page);
