@@ -329,12 +329,15 @@ case "${1:-}" in
         # and network) while the Release build compiles (the cores); their output is shown when
         # an install fails. One after the other: apt takes one install at a time.
         mkdir -p build
-        { if install_web >build/web-install.log 2>&1; then echo 0; else echo 1; fi \
-              >build/web-install.status
-          if install_windows >build/windows-install.log 2>&1; then echo 0; else echo 1; fi \
-              >build/windows-install.status
-          if (install_gltf_validator) >build/node-tools-install.log 2>&1; then echo 0; else echo 1; fi \
-              >build/node-tools-install.status
+        # (record_install NAME FUNCTION: its output in build/NAME-install.log, 0 or 1 in
+        # build/NAME-install.status; in a subshell, since an install may exit)
+        record_install() {
+            if ("$2") >"build/$1-install.log" 2>&1; then echo 0; else echo 1; fi \
+                >"build/$1-install.status"
+        }
+        { record_install web install_web
+          record_install windows install_windows
+          record_install node-tools install_gltf_validator
           install_fuzz >build/fuzz-install.log 2>&1; } &
         install_pid=$!
         timed "Release build" build default

@@ -37,19 +37,21 @@ make_prefix() {
     temporary="$prefix.making.$$"
     rm -rf "$temporary"
     mkdir -p "$(dirname "$prefix")"
-    if ! WINEPREFIX="$temporary" wineboot --init >"$temporary.log" 2>&1; then
-        cat "$temporary.log" >&2
-        rm -rf "$temporary" "$temporary.log"
-        echo "run_wine.sh: wineboot could not make the prefix $prefix" >&2
-        exit 1
-    fi
-    if ! WINEPREFIX="$temporary" wine reg add 'HKCU\Software\Wine\X11 Driver' /v Managed /d N /f \
-            >"$temporary.log" 2>&1; then
-        cat "$temporary.log" >&2
-        rm -rf "$temporary" "$temporary.log"
-        echo "run_wine.sh: could not set the prefix's windows unmanaged" >&2
-        exit 1
-    fi
+    # (making WHAT-FAILED COMMAND...: the command on the temporary prefix; on a failure its
+    # output, the temporary removed, and one line)
+    making() {
+        what="$1"
+        shift
+        if ! WINEPREFIX="$temporary" "$@" >"$temporary.log" 2>&1; then
+            cat "$temporary.log" >&2
+            rm -rf "$temporary" "$temporary.log"
+            echo "run_wine.sh: $what" >&2
+            exit 1
+        fi
+    }
+    making "wineboot could not make the prefix $prefix" wineboot --init
+    making "could not set the prefix's windows unmanaged" \
+        wine reg add 'HKCU\Software\Wine\X11 Driver' /v Managed /d N /f
     # wineboot returns before its server has written the registry out
     WINEPREFIX="$temporary" wineserver --wait
     rm -f "$temporary.log"
