@@ -227,6 +227,37 @@ TEST(ModelFile, A07SaysWhichMaterialUsesWhatItDoesNotDraw) {
     EXPECT_EQ(notes[0].find("KHR_texture_transform"), std::string::npos) << notes[0];
 }
 
+// A file that requires an extension 07 does not draw is drawn without it, and the warning says
+// so first, naming the file and the extension; the extensions it only uses are not named again in
+// the note. (The same file as above, with KHR_materials_clearcoat required.)
+TEST(ModelFile, A07WarnsOfARequiredExtensionItDrawsWithout) {
+    const fs::path dir = testOutputDir("model_required_extension_07");
+    const fs::path file = writeMaterialExtensionsFile(dir);
+    std::string json = readBytes(file);
+    const std::string asset = R"({"asset":{"version":"2.0"},)";
+    ASSERT_EQ(json.rfind(asset, 0), 0u) << json.substr(0, 80);
+    json.insert(asset.size(), R"("extensionsRequired":["KHR_materials_clearcoat"],)");
+    const fs::path required = writeTextFile(dir, "required.gltf", json);
+    const Outcome o =
+        run("07_gltf_metallic_roughness", required, dir / "required.png", {"--no-ibl"});
+    ASSERT_FALSE(o.refused) << o.render.run.err;
+    const std::vector<std::string> lines = o.render.run.errLines();
+    const auto warning = std::find_if(lines.begin(), lines.end(), [](const std::string& line) {
+        return line.starts_with("warning: ");
+    });
+    ASSERT_NE(warning, lines.end()) << o.render.run.err;
+    EXPECT_NE(warning->find("required.gltf: requires KHR_materials_clearcoat, which this renderer "
+                            "does not draw; drawn without it"),
+              std::string::npos)
+        << *warning;
+    for (const std::string& line : lines) {
+        if (line.find("(optional), not drawn") != std::string::npos) {
+            EXPECT_EQ(line.find("KHR_materials_clearcoat"), std::string::npos) << line;
+            EXPECT_NE(line.find("KHR_materials_sheen"), std::string::npos) << line;
+        }
+    }
+}
+
 // 10 draws all seven of them: the same file, no note of an extension not drawn.
 TEST(ModelFile, A10DrawsEveryMaterialExtensionItReads) {
     const fs::path dir = testOutputDir("model_extensions_10");
