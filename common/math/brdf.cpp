@@ -1,6 +1,7 @@
 #include "math/brdf.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -338,9 +339,10 @@ double ashikhmin(double NdotL, double NdotV) {
 
 // What the LUT integrates for one light direction, per unit solid angle of l: (scale, bias,
 // sheen), the lobe's masking-shadowing the texts' Schlick-GGX or (`heightCorrelated`) glTF's
-// V_GGX. Zero below the horizon.
+// V_GGX. Zero below the horizon. Without `withSheen` the sheen is left 0 (a split sum's
+// quadrature does not use it: its pow was a third of the time).
 glm::dvec3 lutIntegrand(const glm::dvec3& V, const glm::dvec3& L, double roughness,
-                        bool heightCorrelated = false) {
+                        bool heightCorrelated = false, bool withSheen = true) {
     const double NdotL = L.z, NdotV = V.z;
     if (NdotL <= 0.0) return glm::dvec3(0.0);
     const glm::dvec3 H = glm::normalize(V + L);
@@ -352,7 +354,8 @@ glm::dvec3 lutIntegrand(const glm::dvec3& V, const glm::dvec3& L, double roughne
             : ggxDistribution(H.z, alpha) * smithSchlickIbl(NdotV, NdotL, roughness) /
                   (4.0 * NdotV);
     const double Fc = std::pow(1.0 - VdotH, 5.0);
-    const double sheen = charlieDistribution(H.z, alpha) * ashikhmin(NdotL, NdotV) * NdotL;
+    const double sheen =
+        withSheen ? charlieDistribution(H.z, alpha) * ashikhmin(NdotL, NdotV) * NdotL : 0.0;
     return {specular * (1.0 - Fc), specular * Fc, sheen};
 }
 
@@ -373,18 +376,27 @@ T halfVectorQuadrature(double NdotV, double alpha, const Integrand& integrand) {
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
+    // the midpoints' cos and sin, the same for every ring (computed once: the same values)
+    static const std::array<glm::dvec2, kPhi> ringDirections = [] {
+        std::array<glm::dvec2, kPhi> directions;
+        for (int k = 0; k < kPhi; ++k) {
+            const double phi = kPi * (k + 0.5) / kPhi;
+            directions[size_t(k)] = {std::cos(phi), std::sin(phi)};
+        }
+        return directions;
+    }();
+
     const glm::dvec3 V(std::sqrt(std::max(0.0, 1.0 - NdotV * NdotV)), 0.0, NdotV);
     T sum(0.0);
     for (size_t p = 0; p + 1 < edges.size(); ++p) {
         const double lo = edges[p], hi = edges[p + 1], half = (hi - lo) / 2.0;
         for (size_t n = 0; n < rule.nodes.size(); ++n) {
             const double theta = lo + half * (rule.nodes[n] + 1.0);
-            const double weightTheta = half * rule.weights[n] * std::sin(theta);
+            const double sinTheta = std::sin(theta), cosTheta = std::cos(theta);
+            const double weightTheta = half * rule.weights[n] * sinTheta;
             T ring(0.0);
-            for (int k = 0; k < kPhi; ++k) {
-                const double phi = kPi * (k + 0.5) / kPhi;
-                const glm::dvec3 H(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                                   std::cos(theta));
+            for (const glm::dvec2& phi : ringDirections) {
+                const glm::dvec3 H(sinTheta * phi.x, sinTheta * phi.y, cosTheta);
                 const double VdotH = glm::dot(V, H);
                 if (VdotH <= 0.0) continue;
                 const glm::dvec3 L = 2.0 * VdotH * H - V;
@@ -397,11 +409,12 @@ T halfVectorQuadrature(double NdotV, double alpha, const Integrand& integrand) {
     return sum;
 }
 
-glm::dvec3 halfVectorQuadrature(double NdotV, double roughness, bool heightCorrelated = false) {
+glm::dvec3 halfVectorQuadrature(double NdotV, double roughness, bool heightCorrelated = false,
+                                bool withSheen = true) {
     return halfVectorQuadrature<glm::dvec3>(
         NdotV, roughness * roughness,
-        [roughness, heightCorrelated](const glm::dvec3& V, const glm::dvec3& L) {
-            return lutIntegrand(V, L, roughness, heightCorrelated);
+        [roughness, heightCorrelated, withSheen](const glm::dvec3& V, const glm::dvec3& L) {
+            return lutIntegrand(V, L, roughness, heightCorrelated, withSheen);
         });
 }
 
@@ -413,11 +426,11 @@ double integrateOverLights(double NdotV, double alpha,
 }
 
 glm::dvec2 splitSumQuadrature(double NdotV, double roughness) {
-    return glm::dvec2(halfVectorQuadrature(NdotV, roughness));
+    return glm::dvec2(halfVectorQuadrature(NdotV, roughness, false, false));
 }
 
 glm::dvec2 gltfSplitSumQuadrature(double NdotV, double roughness) {
-    return glm::dvec2(halfVectorQuadrature(NdotV, roughness, true));
+    return glm::dvec2(halfVectorQuadrature(NdotV, roughness, true, false));
 }
 
 double sheenQuadrature(double NdotV, double roughness) {
